@@ -1,0 +1,18 @@
+// Every subcommand of the shadowc executable registers itself here: it adds a CLI11
+// subcommand with its options and returns the function that runs it (exit code).
+#pragma once
+
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace shadowc::cli {
+
+using CommandRunner = std::function<int()>;
+
+CommandRunner registerCompile(CLI::App& app);    // cmd_compile.cpp
+CommandRunner registerCheck(CLI::App& app);      // cmd_check.cpp
+CommandRunner registerValidate(CLI::App& app);   // cmd_validate.cpp
+CommandRunner registerDemo(CLI::App& app);       // cmd_demo.cpp
+
+}  // namespace shadowc::cli

@@ -1,0 +1,41 @@
+// shadowc: compile soft-shadow filter descriptions to specialized GLSL/SPIR-V, run them on
+// lavapipe against a ray-traced ground truth. See docs/cli.md.
+#include <cstdio>
+#include <exception>
+#include <utility>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "cli/commands.h"
+
+int main(int argc, char** argv) {
+  using namespace shadowc::cli;
+  CLI::App app{"shadowc " SHADOWC_VERSION " - a compiler for soft-shadow filters", "shadowc"};
+  app.set_version_flag("--version", "shadowc " SHADOWC_VERSION);
+  app.require_subcommand(1);
+  std::vector<std::pair<CLI::App*, CommandRunner>> commands;
+  auto add = [&](CommandRunner (*reg)(CLI::App&)) {
+    const size_t before = app.get_subcommands({}).size();
+    CommandRunner run = reg(app);
+    commands.emplace_back(app.get_subcommands({})[before], std::move(run));
+  };
+  add(registerCompile);
+  add(registerCheck);
+  add(registerValidate);
+  add(registerDemo);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  }
+  try {
+    for (auto& [sub, run] : commands)
+      if (sub->parsed()) return run();
+  } catch (const std::exception& e) {
+    std::fflush(stdout);
+    fmt::print(stderr, "shadowc: error: {}\n", e.what());
+    return 1;
+  }
+  return 1;
+}

@@ -1,0 +1,234 @@
+#include "manifest/manifest.h"
+
+#include <algorithm>
+#include <fstream>
+#include <sstream>
+
+namespace shadowc {
+namespace {
+
+template <typename E, size_t N>
+E parseEnum(const nlohmann::json& j, const char* field, const std::array<std::pair<E, const char*>, N>& table) {
+  if (!j.contains(field) || !j.at(field).is_string())
+    throw ManifestError(std::string("manifest: missing or non-string field '") + field + "'");
+  const std::string v = j.at(field).get<std::string>();
+  for (const auto& [e, name] : table)
+    if (v == name) return e;
+  throw ManifestError(std::string("manifest: unknown value '") + v + "' for field '" + field + "'");
+}
+
+constexpr std::array<std::pair<ImageFormat, const char*>, 12> kFormats{{
+    {ImageFormat::R32F, "r32f"}, {ImageFormat::RG32F, "rg32f"}, {ImageFormat::RGBA32F, "rgba32f"},
+    {ImageFormat::R16F, "r16f"}, {ImageFormat::RG16F, "rg16f"}, {ImageFormat::RGBA16F, "rgba16f"},
+    {ImageFormat::R16Unorm, "r16"}, {ImageFormat::RG16Unorm, "rg16"}, {ImageFormat::RGBA16Unorm, "rgba16"},
+    {ImageFormat::R32UI, "r32ui"}, {ImageFormat::RG32UI, "rg32ui"}, {ImageFormat::RGBA32UI, "rgba32ui"}}};
+constexpr std::array<std::pair<ImageRole, const char*>, 5> kRoles{{{ImageRole::Internal, "internal"},
+                                                                   {ImageRole::InputDepth, "input_depth"},
+                                                                   {ImageRole::InputPosition, "input_position"},
+                                                                   {ImageRole::InputNormal, "input_normal"},
+                                                                   {ImageRole::OutputVisibility, "output_visibility"}}};
+constexpr std::array<std::pair<Access, const char*>, 5> kAccess{{{Access::Sampled, "sampled"},
+                                                                {Access::StorageRead, "storage_read"},
+                                                                {Access::StorageWrite, "storage_write"},
+                                                                {Access::StorageReadWrite, "storage_read_write"},
+                                                                {Access::Uniform, "uniform"}}};
+constexpr std::array<std::pair<DispatchMode, const char*>, 3> kModes{
+    {{DispatchMode::Texels, "texels"}, {DispatchMode::Rows, "rows"}, {DispatchMode::Columns, "columns"}}};
+constexpr std::array<std::pair<ScalarType, const char*>, 3> kScalars{
+    {{ScalarType::U32, "u32"}, {ScalarType::I32, "i32"}, {ScalarType::F32, "f32"}}};
+constexpr std::array<std::pair<SizeDomain, const char*>, 2> kDomains{
+    {{SizeDomain::Map, "map"}, {SizeDomain::Screen, "screen"}}};
+
+template <typename E, size_t N>
+const char* nameOf(E e, const std::array<std::pair<E, const char*>, N>& table) {
+  for (const auto& [v, name] : table)
+    if (v == e) return name;
+  return "?";
+}
+
+const nlohmann::json& field(const nlohmann::json& j, const char* name) {
+  if (!j.is_object() || !j.contains(name)) throw ManifestError(std::string("manifest: missing field '") + name + "'");
+  return j.at(name);
+}
+
+template <typename T>
+T get(const nlohmann::json& j, const char* name) {
+  try {
+    return field(j, name).get<T>();
+  } catch (const nlohmann::json::exception&) {
+    throw ManifestError(std::string("manifest: field '") + name + "' has the wrong type");
+  }
+}
+
+nlohmann::ordered_json sizeJson(const SizeRule& s) {
+  nlohmann::ordered_json j;
+  j["domain"] = nameOf(s.domain, kDomains);
+  j["shift"] = s.shift;
+  return j;
+}
+SizeRule sizeFromJson(const nlohmann::json& j) {
+  SizeRule s;
+  s.domain = parseEnum(j, "domain", kDomains);
+  s.shift = get<int>(j, "shift");
+  if (s.shift < 0 || s.shift > 16) throw ManifestError("manifest: size shift out of range [0,16]");
+  return s;
+}
+
+nlohmann::ordered_json bindingJson(const Binding& b) {
+  nlohmann::ordered_json j;
+  j["binding"] = b.binding;
+  j["image"] = b.image;
+  j["access"] = nameOf(b.access, kAccess);
+  j["level"] = b.level;
+  return j;
+}
+Binding bindingFromJson(const nlohmann::json& j) {
+  Binding b;
+  b.binding = get<uint32_t>(j, "binding");
+  b.image = get<std::string>(j, "image");
+  b.access = parseEnum(j, "access", kAccess);
+  b.level = get<int>(j, "level");
+  return b;
+}
+
+}  // namespace
+
+const char* toString(ImageFormat f) { return nameOf(f, kFormats); }
+const char* toString(ImageRole r) { return nameOf(r, kRoles); }
+const char* toString(Access a) { return nameOf(a, kAccess); }
+const char* toString(DispatchMode m) { return nameOf(m, kModes); }
+const char* toString(ScalarType t) { return nameOf(t, kScalars); }
+const char* toString(SizeDomain d) { return nameOf(d, kDomains); }
+
+uint32_t bytesPerTexel(ImageFormat f) {
+  switch (f) {
+    case ImageFormat::R32F: case ImageFormat::R32UI: return 4;
+    case ImageFormat::RG32F: case ImageFormat::RG32UI: return 8;
+    case ImageFormat::RGBA32F: case ImageFormat::RGBA32UI: return 16;
+    case ImageFormat::R16F: case ImageFormat::R16Unorm: return 2;
+    case ImageFormat::RG16F: case ImageFormat::RG16Unorm: return 4;
+    case ImageFormat::RGBA16F: case ImageFormat::RGBA16Unorm: return 8;
+  }
+  return 0;
+}
+
+std::array<uint32_t, 2> extentOf(const SizeRule& rule, uint32_t mapSize, uint32_t screenWidth, uint32_t screenHeight) {
+  const uint32_t w = rule.domain == SizeDomain::Map ? mapSize : screenWidth;
+  const uint32_t h = rule.domain == SizeDomain::Map ? mapSize : screenHeight;
+  return {std::max(1u, w >> rule.shift), std::max(1u, h >> rule.shift)};
+}
+
+nlohmann::ordered_json toJson(const Manifest& m) {
+  nlohmann::ordered_json j;
+  j["format_version"] = m.formatVersion;
+  j["compiler_version"] = m.compilerVersion;
+  j["filter"] = m.filter;
+  j["spec"] = m.spec;
+  auto& images = j["images"] = nlohmann::ordered_json::array();
+  for (const auto& im : m.images) {
+    nlohmann::ordered_json e;
+    e["name"] = im.name;
+    e["format"] = toString(im.format);
+    e["size"] = sizeJson(im.size);
+    e["mip_levels"] = im.mipLevels;
+    e["layers"] = im.layers;
+    e["role"] = toString(im.role);
+    e["linear_filter"] = im.linearFilter;
+    images.push_back(std::move(e));
+  }
+  auto& passes = j["passes"] = nlohmann::ordered_json::array();
+  for (const auto& p : m.passes) {
+    nlohmann::ordered_json e;
+    e["name"] = p.name;
+    e["kind"] = p.kind;
+    e["spirv"] = p.spirv;
+    e["glsl"] = p.glsl;
+    e["local_size"] = p.localSize;
+    e["dispatch"] = {{"size", sizeJson(p.dispatch.size)}, {"mode", toString(p.dispatch.mode)}};
+    auto& bs = e["bindings"] = nlohmann::ordered_json::array();
+    for (const auto& b : p.bindings) bs.push_back(bindingJson(b));
+    auto& pcs = e["push_constants"] = nlohmann::ordered_json::array();
+    for (const auto& pc : p.pushConstants)
+      pcs.push_back({{"name", pc.name}, {"offset", pc.offset}, {"type", toString(pc.type)}, {"value", pc.value}});
+    passes.push_back(std::move(e));
+  }
+  nlohmann::ordered_json shade;
+  shade["glsl"] = m.shade.glsl;
+  shade["function"] = m.shade.function;
+  shade["signature"] = m.shade.signature;
+  auto& sb = shade["bindings"] = nlohmann::ordered_json::array();
+  for (const auto& b : m.shade.bindings) sb.push_back(bindingJson(b));
+  j["shade"] = std::move(shade);
+  j["content_hash"] = m.contentHash;
+  return j;
+}
+
+Manifest manifestFromJson(const nlohmann::json& j) {
+  if (!j.is_object()) throw ManifestError("manifest: not a JSON object");
+  Manifest m;
+  m.formatVersion = get<int>(j, "format_version");
+  if (m.formatVersion != kManifestFormatVersion)
+    throw ManifestError("manifest: format version " + std::to_string(m.formatVersion) +
+                        " is not supported (this build reads version " + std::to_string(kManifestFormatVersion) +
+                        "); recompile the filter with this shadowc");
+  m.compilerVersion = get<std::string>(j, "compiler_version");
+  m.filter = get<std::string>(j, "filter");
+  m.spec = field(j, "spec");
+  for (const auto& e : field(j, "images")) {
+    ImageDesc im;
+    im.name = get<std::string>(e, "name");
+    im.format = parseEnum(e, "format", kFormats);
+    im.size = sizeFromJson(field(e, "size"));
+    im.mipLevels = get<int>(e, "mip_levels");
+    im.layers = get<int>(e, "layers");
+    im.role = parseEnum(e, "role", kRoles);
+    im.linearFilter = get<bool>(e, "linear_filter");
+    m.images.push_back(std::move(im));
+  }
+  for (const auto& e : field(j, "passes")) {
+    Pass p;
+    p.name = get<std::string>(e, "name");
+    p.kind = get<std::string>(e, "kind");
+    p.spirv = get<std::string>(e, "spirv");
+    p.glsl = get<std::string>(e, "glsl");
+    p.localSize = get<std::array<uint32_t, 3>>(e, "local_size");
+    const auto& d = field(e, "dispatch");
+    p.dispatch.size = sizeFromJson(field(d, "size"));
+    p.dispatch.mode = parseEnum(d, "mode", kModes);
+    for (const auto& b : field(e, "bindings")) p.bindings.push_back(bindingFromJson(b));
+    for (const auto& pc : field(e, "push_constants"))
+      p.pushConstants.push_back({get<std::string>(pc, "name"), get<uint32_t>(pc, "offset"),
+                                 parseEnum(pc, "type", kScalars), get<double>(pc, "value")});
+    m.passes.push_back(std::move(p));
+  }
+  const auto& s = field(j, "shade");
+  m.shade.glsl = get<std::string>(s, "glsl");
+  m.shade.function = get<std::string>(s, "function");
+  m.shade.signature = get<std::string>(s, "signature");
+  for (const auto& b : field(s, "bindings")) m.shade.bindings.push_back(bindingFromJson(b));
+  m.contentHash = get<std::string>(j, "content_hash");
+  // Cross-references: every binding names a declared image (or the frame buffer).
+  for (const auto& p : m.passes)
+    for (const auto& b : p.bindings) {
+      if (b.access == Access::Uniform) continue;
+      const bool known = std::any_of(m.images.begin(), m.images.end(), [&](const ImageDesc& im) { return im.name == b.image; });
+      if (!known) throw ManifestError("manifest: pass '" + p.name + "' binds unknown image '" + b.image + "'");
+    }
+  return m;
+}
+
+Manifest loadManifest(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ManifestError("cannot open manifest '" + path + "'");
+  std::stringstream ss;
+  ss << in.rdbuf();
+  nlohmann::json j = nlohmann::json::parse(ss.str(), nullptr, false);
+  if (j.is_discarded()) throw ManifestError("manifest '" + path + "' is not valid JSON");
+  try {
+    return manifestFromJson(j);
+  } catch (const ManifestError& e) {
+    throw ManifestError(path + ": " + e.what());
+  }
+}
+
+}  // namespace shadowc

@@ -1,0 +1,124 @@
+// The manifest: the contract between the compiler and the runtime (DESIGN.md, "The manifest
+// is the contract"). The runtime executes what is listed here and knows nothing about the
+// technique behind it. Serialized as manifest.json; see docs/manifest.md for the schema.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace shadowc {
+
+inline constexpr int kManifestFormatVersion = 1;
+
+enum class ImageFormat { R32F, RG32F, RGBA32F, R16F, RG16F, RGBA16F, R16Unorm, RG16Unorm, RGBA16Unorm,
+                         R32UI, RG32UI, RGBA32UI };
+
+// What the runtime must put into (or take out of) an image. Internal images are the
+// filter's own business; the others are the fixed interface between harness and filter.
+enum class ImageRole {
+  Internal,
+  InputDepth,      // light-space normalized linear depth, R32F, size "map" (see frame.glsl)
+  InputPosition,   // camera G-buffer world position, RGBA32F, w = 1 where geometry
+  InputNormal,     // camera G-buffer world normal, RGBA32F
+  OutputVisibility // R32F in [0,1], size "screen"
+};
+
+enum class SizeDomain { Map, Screen };
+struct SizeRule {
+  SizeDomain domain = SizeDomain::Map;
+  int shift = 0;  // extent = max(1, domain_extent >> shift)
+};
+
+struct ImageDesc {
+  std::string name;
+  ImageFormat format = ImageFormat::R32F;
+  SizeRule size;
+  int mipLevels = 1;  // 0 = full chain down to 1x1
+  int layers = 1;     // array layers (layered moments)
+  ImageRole role = ImageRole::Internal;
+  bool linearFilter = false;  // sampled with a linear sampler (else nearest)
+};
+
+enum class Access { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform };
+struct Binding {
+  uint32_t binding = 0;
+  std::string image;  // image name, or "frame" for the ShadowcFrame uniform buffer
+  Access access = Access::Sampled;
+  int level = -1;     // storage views: the mip level bound; -1 = level 0 / whole image
+};
+
+enum class DispatchMode {
+  Texels,   // one invocation per texel of the domain extent (x, y)
+  Rows,     // one invocation per row (y); x covered by the shader's loop (SAT scans)
+  Columns,  // one invocation per column (x)
+};
+struct Dispatch {
+  SizeRule size;
+  DispatchMode mode = DispatchMode::Texels;
+};
+
+enum class ScalarType { U32, I32, F32 };
+struct PushConstant {
+  std::string name;
+  uint32_t offset = 0;
+  ScalarType type = ScalarType::U32;
+  double value = 0;  // the value the runtime pushes for this pass
+};
+
+struct Pass {
+  std::string name;  // unique, e.g. "sat_rows", "minmax_level3", "shade"
+  std::string kind;  // what it does, for reports only: "moments", "blur", "sat", "minmax", "shade", ...
+  std::string spirv; // file name relative to the manifest
+  std::string glsl;  // file name relative to the manifest
+  std::array<uint32_t, 3> localSize{8, 8, 1};
+  Dispatch dispatch;
+  std::vector<Binding> bindings;
+  std::vector<PushConstant> pushConstants;
+};
+
+// The includable lookup function for engines (DESIGN.md: "the shade function's interface").
+struct ShadeInterface {
+  std::string glsl;       // file with the function and its resource declarations
+  std::string function;   // e.g. "shadowc_visibility"
+  std::string signature;  // e.g. "float shadowc_visibility(vec3 worldPos, vec3 worldNormal)"
+  std::vector<Binding> bindings;
+};
+
+struct Manifest {
+  int formatVersion = kManifestFormatVersion;
+  std::string compilerVersion;
+  std::string filter;             // filter name
+  nlohmann::json spec;            // the normalized FilterSpec (as --print-spec prints it)
+  std::vector<ImageDesc> images;
+  std::vector<Pass> passes;       // in execution order
+  ShadeInterface shade;
+  std::string contentHash;        // hash of every emitted file but the manifest itself
+};
+
+// JSON form. toJson is deterministic (fixed key order). fromJson throws ManifestError with
+// a one-line message naming the offending field, or a version mismatch.
+nlohmann::ordered_json toJson(const Manifest& m);
+Manifest manifestFromJson(const nlohmann::json& j);
+Manifest loadManifest(const std::string& path);  // reads + parses; throws ManifestError
+
+struct ManifestError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+const char* toString(ImageFormat f);
+const char* toString(ImageRole r);
+const char* toString(Access a);
+const char* toString(DispatchMode m);
+const char* toString(ScalarType t);
+const char* toString(SizeDomain d);
+uint32_t bytesPerTexel(ImageFormat f);
+// Width and height of a size rule, given the shadow-map size (square) and the screen size.
+std::array<uint32_t, 2> extentOf(const SizeRule& rule, uint32_t mapSize, uint32_t screenWidth,
+                                 uint32_t screenHeight);
+
+}  // namespace shadowc

@@ -1,0 +1,154 @@
+// FilterSpec: the checked, normalized description of one shadow filter.
+//
+// This is the contract between the front end (dsl/ -> spec/check) and the planner/emitter
+// (plan/, emit/). Every field has an explicit value after checking: no "unset" survives
+// the checker, so the planner never guesses a default. The names of the axes follow
+// DESIGN.md ("A filter is a product of orthogonal choices").
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace shadowc {
+
+// ---- light -------------------------------------------------------------------------------
+enum class LightShape { Rect, Disk, Point };
+struct LightSpec {
+  LightShape shape = LightShape::Rect;
+  // Width of the light in world units. sizeFromScene = true means the runtime supplies it
+  // through the frame uniforms (ShadowcFrame.lightWidth); false folds `size` into the shader.
+  bool sizeFromScene = true;
+  double size = 0.0;
+};
+
+// ---- representation ----------------------------------------------------------------------
+// What the prefilter passes store per shadow-map texel.
+enum class Representation {
+  Depth,    // plain depth, visibility by comparison (hard, PCF, PCSS)
+  Moments,  // warped moments, visibility by an estimator (VSM, ESM, EVSM, power-CDF, VSSM)
+};
+enum class Warp {
+  Linear,    // (z, z^2): VSM / VSSM, Chebyshev (vsm-tutorial, vssm-yang2010 eq. 1)
+  Exp,       // exp(c z): ESM
+  Evsm2,     // (exp(c+ z), exp(c+ z)^2): positive EVSM
+  Evsm4,     // (exp(c+ z), exp(c+ z)^2, -exp(-c- z), exp(-c- z)^2)
+  PowerCdf,  // (min, max, mean): power-CDF shadow maps
+};
+enum class SplitPlacement { Uniform, Explicit, Lloyd };
+struct MomentsSpec {
+  Warp warp = Warp::Linear;
+  int layers = 1;                       // >= 1; layered VSM (lauritzen2008) when > 1
+  SplitPlacement split = SplitPlacement::Uniform;
+  std::vector<double> splits;           // layers+1 boundaries in [0,1] depth after checking
+  double overlap = 0.0;                 // delta of lauritzen2008 sec. 4, in normalized depth
+  double positiveExponent = 40.0;       // c+ for Exp/Evsm2/Evsm4
+  double negativeExponent = 5.0;        // c- for Evsm4
+  double minVariance = 1e-5;            // VSM minimum variance (per layer when layered)
+  double bleedingReduction = 0.0;       // 0 = off; else Lauritzen's linstep(amount, 1, p)
+  int lloydIterations = 8;              // for SplitPlacement::Lloyd (needs scene histogram)
+};
+
+// ---- storage -----------------------------------------------------------------------------
+enum class StorageFormat { Fp32, Fp16, Unorm16 };
+enum class SatKind {
+  None,
+  Int32,          // uint32 16.16 fixed point, wrap-around sums (Lauritzen 2007, vssm sec. 6.4)
+  Fp32Centered,   // fp32 sums of (value - 0.5): the usual precision fix
+  Fp32Naive,      // plain fp32 sums: kept only so the stability suite can show it failing
+};
+struct StorageSpec {
+  StorageFormat format = StorageFormat::Fp32;
+  SatKind sat = SatKind::None;
+};
+
+// ---- prefilter ---------------------------------------------------------------------------
+enum class BlurKind { None, Box, Gaussian };
+struct PrefilterSpec {
+  BlurKind blur = BlurKind::None;
+  int blurRadius = 0;  // texels; separable, two passes
+  bool mips = false;   // build a mip chain of the representation (trilinear lookups)
+};
+
+// ---- blocker estimate --------------------------------------------------------------------
+enum class BlockerKind {
+  None,     // fixed kernel: no blocker search
+  Search,   // PCSS blocker search (pcss-blog.txt)
+  Moments,  // VSSM eq. 4: z_occ = (z_avg - P t) / (1 - P), vssm-yang2010 sec. 4.2
+};
+enum class SamplePattern { Grid, Poisson };
+enum class Subdivision { None, Uniform, Quadtree };
+struct BlockerSpec {
+  BlockerKind kind = BlockerKind::None;
+  int taps = 16;                              // Search: number of taps
+  SamplePattern pattern = SamplePattern::Poisson;
+  Subdivision subdivision = Subdivision::Uniform;  // Moments: paper's mixed scheme uses m = 5
+  int uniformM = 5;
+  int quadtreeHeight = 3;
+};
+
+// ---- kernel ------------------------------------------------------------------------------
+enum class KernelSize { Fixed, Penumbra };
+enum class QuadtreeTraversal { Table, Unrolled };  // Algorithm 2 via Next/Child tables
+struct KernelSpec {
+  KernelSize size = KernelSize::Penumbra;
+  int fixedTexels = 3;                       // Fixed: kernel width in texels (odd)
+  Subdivision subdivision = Subdivision::None;
+  int uniformN = 8;                          // Uniform n x n (vssm sec. 5.2)
+  int quadtreeHeight = 3;                    // Quadtree of height H (vssm sec. 5.3)
+  QuadtreeTraversal traversal = QuadtreeTraversal::Table;
+  double maxTexels = 64;                     // clamp of penumbra-driven kernel width
+  double litThreshold = 1e-4;                // Algorithm 2 "Threshold" (vssm sec. 6.5)
+};
+
+// ---- sampling (depth representation) -----------------------------------------------------
+enum class PcfPattern { Grid, Bilinear, Poisson };
+enum class Rotation { None, Stable };  // stable per world position (pcss-blog.txt)
+struct SamplingSpec {
+  PcfPattern pattern = PcfPattern::Grid;
+  int gridN = 3;        // Grid/Bilinear: n x n
+  int taps = 16;        // Poisson: k taps
+  Rotation rotation = Rotation::Stable;
+};
+
+// ---- extras ------------------------------------------------------------------------------
+enum class BiasKind { Constant, SlopeScaled, NormalOffset };
+struct BiasSpec {
+  BiasKind kind = BiasKind::Constant;
+  double constant = 1e-3;   // Constant: b; SlopeScaled: max(slope*(1 - N.L), constant)
+  double slope = 5e-3;
+  double normalOffset = 0;  // NormalOffset: world units along N, scaled by texel size
+};
+struct FallbackSpec {
+  bool pcf = false;  // PCF on non-planar leaves (vssm sec. 5.2 option 2)
+  int n = 2;
+};
+struct ContactSpec {
+  bool enabled = false;  // vssm sec. 6.4: |z_avg - d| < epsilon -> n x n PCF
+  int n = 3;
+  double epsilon = 0.01;
+};
+
+struct SourceLocation {
+  std::string file;
+  int line = 0, column = 0;
+};
+
+struct FilterSpec {
+  std::string name;
+  SourceLocation location;  // of the `filter` keyword
+  LightSpec light;
+  Representation representation = Representation::Depth;
+  MomentsSpec moments;
+  StorageSpec storage;
+  PrefilterSpec prefilter;
+  BlockerSpec blocker;
+  KernelSpec kernel;
+  SamplingSpec sampling;
+  BiasSpec bias;
+  FallbackSpec fallback;
+  ContactSpec contact;
+  bool earlyOutMinMax = false;  // min-max hierarchical shadow map (vssm sec. 6.1)
+};
+
+}  // namespace shadowc

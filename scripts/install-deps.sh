@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Installs every Debian package shadowc needs that is not already present.
+# Idempotent: does nothing (and needs no root) when everything is installed.
+set -euo pipefail
+PKGS=(
+  cmake make g++ pkg-config
+  glslang-dev glslang-tools spirv-tools           # GLSL -> SPIR-V, spirv-opt, spirv-val (in process)
+  libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools   # loader, lavapipe, Khronos layers
+  libglm-dev libfmt-dev nlohmann-json3-dev libcli11-dev libstb-dev          # math, format, JSON, CLI, PNG
+  libembree-dev libtbb-dev libassimp-dev                                    # ray-traced reference, meshes
+  libgtest-dev libgmock-dev libbenchmark-dev                                # tests and benchmarks
+)
+missing=()
+for p in "${PKGS[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "install-deps: all ${#PKGS[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${#missing[@]} missing packages: ${missing[*]}"
+SUDO=""
+if [[ $(id -u) -ne 0 ]]; then
+  command -v sudo >/dev/null || { echo "install-deps: error: need root or sudo to install: ${missing[*]}" >&2; exit 1; }
+  SUDO=sudo
+fi
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -qq
+$SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+echo "install-deps: done"

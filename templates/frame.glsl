@@ -1,0 +1,54 @@
+// frame.glsl — the per-frame interface between the runtime harness and every shadowc pass.
+// Mirrored byte for byte by runtime/frame_uniforms.h (std140). Conventions:
+//  * Light view space: origin at the light's centre, +z along the light axis (distance in
+//    front of the light), the area light lies in the plane z = 0 with width `lightWidth`
+//    (rectangle side or disk diameter; 0 = point light).
+//  * The shadow map is a perspective projection from the light centre:
+//        uv = 0.5 + 0.5 * p.xy / (p.z * tanHalfFov)
+//  * The input depth image stores normalized linear depth d = (z - near) / (far - near).
+//  * Kernel widths below are in uv units of the shadow map (PCSS, pcss-blog.txt; vssm-yang2010
+//    sec. 3, L7 and L16): the cone from a receiver to the light, cut by the plane of the
+//    (assumed planar, light-parallel) occluders.
+#ifndef SHADOWC_FRAME_GLSL
+#define SHADOWC_FRAME_GLSL
+
+#ifndef SHADOWC_FRAME_BINDING
+#define SHADOWC_FRAME_BINDING 0
+#endif
+
+layout(set = 0, binding = SHADOWC_FRAME_BINDING, std140) uniform ShadowcFrame {
+  mat4 lightView;     // world -> light view
+  vec4 lightParams;   // x tanHalfFov, y near, z far, w lightWidth (world units)
+  vec4 lightShape;    // x 0 rect / 1 disk / 2 point, yzw unused
+  vec4 mapInfo;       // x map size (texels), y 1/size, zw unused
+  vec4 screenInfo;    // x width, y height, z 1/width, w 1/height
+} frame;
+
+// World position -> (uv, normalized depth d, view z).
+vec4 shadowc_lightSpace(vec3 worldPos) {
+  vec3 p = (frame.lightView * vec4(worldPos, 1.0)).xyz;
+  vec2 uv = 0.5 + 0.5 * p.xy / (p.z * frame.lightParams.x);
+  float d = (p.z - frame.lightParams.y) / (frame.lightParams.z - frame.lightParams.y);
+  return vec4(uv, d, p.z);
+}
+
+float shadowc_viewZ(float d) { return frame.lightParams.y + d * (frame.lightParams.z - frame.lightParams.y); }
+
+// Light width projected onto the near plane, in uv units.
+float shadowc_lightSizeUV(float lightWidth) {
+  return lightWidth / (2.0 * frame.lightParams.y * frame.lightParams.x);
+}
+
+// Blocker search width (uv) for a receiver at view depth zr: the cone to the light cut at the
+// near plane, the widest cut of any occluder plane.
+float shadowc_searchWidthUV(float lightWidth, float zr) {
+  return shadowc_lightSizeUV(lightWidth) * (zr - frame.lightParams.y) / zr;
+}
+
+// Filter width (uv) for a receiver at zr behind a blocker at zb: exact for a planar occluder
+// parallel to the light (PCSS penumbra estimate, w = W (zr - zb) / zb at the receiver).
+float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb) {
+  return shadowc_lightSizeUV(lightWidth) * frame.lightParams.y * (zr - zb) / (zb * zr);
+}
+
+#endif

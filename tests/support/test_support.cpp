@@ -1,0 +1,54 @@
+#include "support/test_support.h"
+
+#include <atomic>
+#include <cstdlib>
+#include <fstream>
+#include <sstream>
+
+#include <unistd.h>
+
+namespace shadowc::test {
+
+std::filesystem::path sourceDir() { return SHADOWC_SOURCE_DIR; }
+
+std::filesystem::path freshTempDir(const std::string& tag) {
+  static std::atomic<int> counter{0};
+  auto dir = std::filesystem::temp_directory_path() /
+             ("shadowc-test-" + tag + "-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+std::string readFile(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+std::string compareGolden(const std::filesystem::path& golden, const std::string& actual) {
+  const char* update = std::getenv("SHADOWC_UPDATE_GOLDEN");
+  if (update && std::string(update) == "1") {
+    std::filesystem::create_directories(golden.parent_path());
+    std::ofstream(golden, std::ios::binary) << actual;
+    return {};
+  }
+  if (!std::filesystem::exists(golden))
+    return "golden file " + golden.string() + " is missing (run with SHADOWC_UPDATE_GOLDEN=1 to create it)";
+  const std::string expected = readFile(golden);
+  if (expected == actual) return {};
+  // First differing line, for a readable failure.
+  std::istringstream a(actual), e(expected);
+  std::string la, le;
+  for (int line = 1;; ++line) {
+    const bool ga = static_cast<bool>(std::getline(a, la)), ge = static_cast<bool>(std::getline(e, le));
+    if (!ga && !ge) break;
+    if (la != le || ga != ge)
+      return golden.string() + ":" + std::to_string(line) + ": expected '" + (ge ? le : "<eof>") + "', got '" +
+             (ga ? la : "<eof>") + "' (SHADOWC_UPDATE_GOLDEN=1 rewrites it after review)";
+  }
+  return golden.string() + ": differs";
+}
+
+}  // namespace shadowc::test

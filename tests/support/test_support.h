@@ -1,0 +1,18 @@
+// Helpers shared by every test folder: paths into the source tree, temp dirs, golden files.
+#pragma once
+
+#include <filesystem>
+#include <string>
+
+namespace shadowc::test {
+
+std::filesystem::path sourceDir();                      // the repository root
+std::filesystem::path freshTempDir(const std::string& tag);  // empty, unique per test
+std::string readFile(const std::filesystem::path& p);
+
+// Golden files (glslang's Test/baseResults habit): compares `actual` with the file; when the
+// environment has SHADOWC_UPDATE_GOLDEN=1 the file is rewritten instead and the check passes.
+// Returns an empty string on match, else a short diff description.
+std::string compareGolden(const std::filesystem::path& golden, const std::string& actual);
+
+}  // namespace shadowc::test
