@@ -1,0 +1,199 @@
+#include "plan/planner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "plan/glsl_literal.h"
+#include "plan/image_formats.h"
+
+namespace shadowc {
+namespace {
+
+constexpr SizeRule kMap{SizeDomain::Map, 0};
+constexpr SizeRule kScreen{SizeDomain::Screen, 0};
+
+using Defines = std::vector<std::pair<std::string, std::string>>;
+
+int warpCode(Warp w) {  // moments_warp.glsl SHADOWC_WARP
+  switch (w) {
+    case Warp::Linear: return 0;
+    case Warp::Exp: return 1;
+    case Warp::Evsm2: return 2;
+    case Warp::Evsm4: return 3;
+    case Warp::PowerCdf: return 4;
+  }
+  return 0;
+}
+
+int satCode(SatKind k) {  // sat_common.glsl SHADOWC_SAT_KIND
+  switch (k) {
+    case SatKind::Int32: return 1;
+    case SatKind::Fp32Centered: return 2;
+    case SatKind::Fp32Naive: return 3;
+    case SatKind::None: break;
+  }
+  return 0;
+}
+
+// Separable blur weights w[0..r], w[k] = w[-k], summing to 1 over [-r, r].
+// Gaussian sigma = r/2 keeps the tails at the window edge near 2 sigma.
+std::vector<double> blurWeights(BlurKind kind, int r) {
+  std::vector<double> w(static_cast<size_t>(r) + 1, 1.0);
+  if (kind == BlurKind::Gaussian) {
+    const double sigma = std::max(0.5, r / 2.0);
+    for (int k = 0; k <= r; ++k) w[k] = std::exp(-(k * k) / (2.0 * sigma * sigma));
+  }
+  double total = w[0];
+  for (int k = 1; k <= r; ++k) total += 2.0 * w[k];
+  for (double& x : w) x /= total;
+  return w;
+}
+
+class Planner {
+ public:
+  explicit Planner(const FilterSpec& spec) : spec_(spec) { graph_.manifest.filter = spec.name; }
+
+  PassGraph run() {
+    addImage({"gbuffer_position", ImageFormat::RGBA32F, kScreen, 1, 1, ImageRole::InputPosition, false});
+    addImage({"gbuffer_normal", ImageFormat::RGBA32F, kScreen, 1, 1, ImageRole::InputNormal, false});
+    addImage({"visibility", ImageFormat::R32F, kScreen, 1, 1, ImageRole::OutputVisibility, false});
+    addImage({"shadow_depth", ImageFormat::R32F, kMap, 1, 1, ImageRole::InputDepth, false});
+    const bool moments = spec_.representation == Representation::Moments;
+    if (moments) planMoments();
+    if (spec_.earlyOutMinMax) planMinMax();
+    planShade();
+    return std::move(graph_);
+  }
+
+ private:
+  void addImage(ImageDesc d) { graph_.manifest.images.push_back(std::move(d)); }
+
+  Pass& addPass(std::string name, std::string kind, std::array<uint32_t, 3> local, Dispatch dispatch,
+                PassSource source) {
+    Pass p;
+    p.name = std::move(name);
+    p.kind = std::move(kind);
+    p.glsl = source.stem + ".glsl";
+    p.spirv = source.stem + ".spv";
+    p.localSize = local;
+    p.dispatch = dispatch;
+    graph_.manifest.passes.push_back(std::move(p));
+    graph_.sources.push_back(std::move(source));
+    return graph_.manifest.passes.back();
+  }
+
+  Defines momentsDefines() const {
+    return {{"SHADOWC_WARP", std::to_string(warpCode(spec_.moments.warp))},
+            {"SHADOWC_EXP_POSITIVE", glslFloat(spec_.moments.positiveExponent)},
+            {"SHADOWC_EXP_NEGATIVE", glslFloat(spec_.moments.negativeExponent)},
+            {"SHADOWC_LAYERS", std::to_string(spec_.moments.layers)},
+            {"SHADOWC_MOMENTS_FORMAT", glslQualifier(momentsFormat(spec_))}};
+  }
+
+  void planMoments() {
+    const int layers = std::max(1, spec_.moments.layers);
+    const bool mips = spec_.prefilter.mips;
+    const int levels = mips ? pyramidLevels(spec_) : 1;
+    addImage({"moments", momentsFormat(spec_), kMap, levels, layers, ImageRole::Internal, true});
+
+    // moments: depth -> warped (per-layer remapped) moments.
+    Defines d = momentsDefines();
+    d.emplace_back("SHADOWC_SPLITS", glslFloatArray(layerSplits(spec_)));
+    d.emplace_back("SHADOWC_OVERLAP", glslFloat(spec_.moments.overlap));
+    Pass& m = addPass("moments", "moments", {8, 8, 1}, {kMap, DispatchMode::Texels},
+                      {"passes/moments.comp", "moments", std::move(d), false});
+    m.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "moments", Access::StorageWrite, 0}};
+
+    if (spec_.prefilter.blur != BlurKind::None && spec_.prefilter.blurRadius > 0) {
+      addImage({"moments_tmp", momentsFormat(spec_), kMap, 1, layers, ImageRole::Internal, false});
+      const int r = spec_.prefilter.blurRadius;
+      for (int axis = 0; axis < 2; ++axis) {
+        Defines b = momentsDefines();
+        b.emplace_back("SHADOWC_BLUR_AXIS", std::to_string(axis));
+        b.emplace_back("SHADOWC_BLUR_RADIUS", std::to_string(r));
+        b.emplace_back("SHADOWC_BLUR_WEIGHTS", glslFloatArray(blurWeights(spec_.prefilter.blur, r)));
+        const std::string name = axis == 0 ? "blur_h" : "blur_v";
+        Pass& p = addPass(name, "blur", {8, 8, 1}, {kMap, DispatchMode::Texels},
+                          {"passes/blur.comp", name, std::move(b), false});
+        const char* from = axis == 0 ? "moments" : "moments_tmp";
+        const char* to = axis == 0 ? "moments_tmp" : "moments";
+        p.bindings = {{0, from, Access::StorageRead, 0}, {1, to, Access::StorageWrite, 0}};
+      }
+    }
+
+    for (int k = 1; k < levels; ++k) {
+      Pass& p = addPass("mip" + std::to_string(k), "mip", {8, 8, 1}, {{SizeDomain::Map, k}, DispatchMode::Texels},
+                        {"passes/mip.comp", "mip", momentsDefines(), false});
+      p.bindings = {{0, "moments", Access::StorageRead, k - 1}, {1, "moments", Access::StorageWrite, k}};
+    }
+
+    if (spec_.storage.sat != SatKind::None) planSat(layers);
+  }
+
+  void planSat(int layers) {
+    addImage({"sat", satFormat(spec_), kMap, 1, layers, ImageRole::Internal, false});
+    Defines d = momentsDefines();
+    d.emplace_back("SHADOWC_SAT_KIND", std::to_string(satCode(spec_.storage.sat)));
+    d.emplace_back("SHADOWC_SAT_FORMAT", glslQualifier(satFormat(spec_)));
+    Pass& rows = addPass("sat_rows", "sat", {64, 1, 1}, {kMap, DispatchMode::Rows},
+                         {"passes/sat_rows.comp", "sat_rows", d, false});
+    rows.bindings = {{0, "moments", Access::StorageRead, 0}, {1, "sat", Access::StorageWrite, 0}};
+    Pass& cols = addPass("sat_columns", "sat", {64, 1, 1}, {kMap, DispatchMode::Columns},
+                         {"passes/sat_columns.comp", "sat_columns", d, false});
+    cols.bindings = {{0, "sat", Access::StorageReadWrite, 0}};
+  }
+
+  void planMinMax() {
+    const int levels = pyramidLevels(spec_);
+    addImage({"minmax", ImageFormat::RG32F, kMap, levels, 1, ImageRole::Internal, false});
+    Pass& p0 = addPass("minmax0", "minmax", {8, 8, 1}, {kMap, DispatchMode::Texels},
+                       {"passes/minmax.comp", "minmax0", {{"SHADOWC_MINMAX_LEVEL0", "1"}}, false});
+    p0.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "minmax", Access::StorageWrite, 0}};
+    for (int k = 1; k < levels; ++k) {
+      Pass& p = addPass("minmax" + std::to_string(k), "minmax", {8, 8, 1},
+                        {{SizeDomain::Map, k}, DispatchMode::Texels},
+                        {"passes/minmax.comp", "minmax", {{"SHADOWC_MINMAX_LEVEL0", "0"}}, false});
+      p.bindings = {{0, "minmax", Access::StorageRead, k - 1}, {1, "minmax", Access::StorageWrite, k}};
+    }
+  }
+
+  void planShade() {
+    Pass& s = addPass("shade", "shade", {8, 8, 1}, {kScreen, DispatchMode::Texels}, {"shade.comp", "shade", {}, true});
+    s.bindings = {{0, "frame", Access::Uniform, -1},
+                  {1, "gbuffer_position", Access::StorageRead, -1},
+                  {2, "gbuffer_normal", Access::StorageRead, -1},
+                  {3, "visibility", Access::StorageWrite, -1},
+                  {4, "shadow_depth", Access::Sampled, -1}};
+    auto has = [&](const char* name) {
+      const auto& ims = graph_.manifest.images;
+      return std::any_of(ims.begin(), ims.end(), [&](const ImageDesc& d) { return d.name == name; });
+    };
+    if (has("moments")) s.bindings.push_back({5, "moments", Access::Sampled, -1});
+    if (has("sat")) s.bindings.push_back({6, "sat", Access::Sampled, -1});
+    if (has("minmax")) s.bindings.push_back({7, "minmax", Access::Sampled, -1});
+  }
+
+  const FilterSpec& spec_;
+  PassGraph graph_;
+};
+
+}  // namespace
+
+int pyramidLevels(const FilterSpec& spec) {
+  const double texels = std::max(2.0, spec.kernel.maxTexels);
+  const int k = static_cast<int>(std::ceil(std::log2(texels) - 1e-9));
+  return std::clamp(k, 1, 12) + 1;
+}
+
+std::vector<double> layerSplits(const FilterSpec& spec) {
+  const int layers = std::max(1, spec.moments.layers);
+  if (static_cast<int>(spec.moments.splits.size()) == layers + 1) return spec.moments.splits;
+  std::vector<double> s(static_cast<size_t>(layers) + 1);
+  for (int i = 0; i <= layers; ++i) s[i] = static_cast<double>(i) / layers;
+  return s;
+}
+
+PassGraph planPasses(const FilterSpec& spec) { return Planner(spec).run(); }
+
+}  // namespace shadowc

@@ -1,0 +1,25 @@
+// Planner: FilterSpec -> PassGraph. Decides which images exist (names, formats, sizes, layers,
+// mips) and which passes run in which order, following the fixed image/binding table of the
+// shade pass (docs/manifest.md). Only the passes a spec needs are planned: a depth-only PCF
+// filter is the shade pass alone.
+#pragma once
+
+#include "plan/pass_graph.h"
+#include "spec/filter_spec.h"
+
+namespace shadowc {
+
+// Pass order: moments, blur_h, blur_v, mip1..mipK, sat_rows, sat_columns, minmax0..minmaxK, shade.
+PassGraph planPasses(const FilterSpec& spec);
+
+// Levels of the `moments` mip chain and of the `minmax` pyramid: K + 1 with
+// K = ceil(log2(kernel.maxTexels)), clamped to [1, 12], so that the coarsest level covers the
+// widest kernel the filter can ask for (a fixed count keeps the manifest independent of the
+// map size; the runtime needs a map of at least 2^K texels).
+int pyramidLevels(const FilterSpec& spec);
+
+// The layer boundaries the passes fold in: spec.moments.splits when it has layers+1 entries,
+// else uniform. (Lloyd placement is not computed on the GPU yet: it falls back to these.)
+std::vector<double> layerSplits(const FilterSpec& spec);
+
+}  // namespace shadowc

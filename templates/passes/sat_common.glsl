@@ -1,0 +1,36 @@
+// sat_common.glsl — the summed-area table's storage conventions, shared by sat_rows.comp,
+// sat_columns.comp and the lookups that read the `sat` image.
+//   SHADOWC_SAT_KIND 1 int32:         uint32 16.16 fixed point, v in [0,1] -> uint(round(v * 65536)),
+//                                     sums wrap mod 2^32: box sums stay exact while each box sum fits
+//                                     in 32 bits (Lauritzen 2007 via vssm-yang2010 sec. 6.4; FACTS.md)
+//   SHADOWC_SAT_KIND 2 fp32 centered: fp32 sums of (v - 0.5) (FACTS.md: 7.7e-3 vs 0.23 at 2048^2)
+//   SHADOWC_SAT_KIND 3 fp32 naive:    fp32 sums of v (kept to show the precision failure)
+// Inclusive convention: S(x, y) = sum of texels [0..x] x [0..y]. The box sum over texels
+// [x0, x1] x [y0, y1] is S(x1, y1) - S(x0-1, y1) - S(x1, y0-1) + S(x0-1, y0-1), where any term
+// with a coordinate of -1 is 0.
+#ifndef SHADOWC_SAT_COMMON_GLSL
+#define SHADOWC_SAT_COMMON_GLSL
+
+#ifndef SHADOWC_SAT_KIND
+#define SHADOWC_SAT_KIND 1
+#endif
+#ifndef SHADOWC_SAT_FORMAT
+#define SHADOWC_SAT_FORMAT rg32ui
+#endif
+
+#if SHADOWC_SAT_KIND == 1
+#define SHADOWC_SAT_VALUE uvec4
+#define SHADOWC_SAT_IMAGE uimage2DArray
+// Values outside [0,1] would wrap meaninglessly; the checker only allows warps in [0,1] here.
+uvec4 shadowc_satEncode(vec4 v) { return uvec4(round(clamp(v, 0.0, 1.0) * 65536.0)); }
+#elif SHADOWC_SAT_KIND == 2
+#define SHADOWC_SAT_VALUE vec4
+#define SHADOWC_SAT_IMAGE image2DArray
+vec4 shadowc_satEncode(vec4 v) { return v - 0.5; }
+#else
+#define SHADOWC_SAT_VALUE vec4
+#define SHADOWC_SAT_IMAGE image2DArray
+vec4 shadowc_satEncode(vec4 v) { return v; }
+#endif
+
+#endif
