@@ -1,14 +1,60 @@
-// PLACEHOLDER: replaced by the real command during the first build-out.
+// shadowc check FILE...: runs the front end (lex, parse, check) and prints diagnostics in glslc
+// form. Exit 0 when every file is clean, 1 when any has an error (warnings count with -Werror),
+// 2 on usage errors (CLI11). --print-spec prints each clean file's normalized spec as JSON.
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
 #include <fmt/core.h>
 
 #include "cli/commands.h"
+#include "spec/load_filter.h"
 
 namespace shadowc::cli {
+namespace {
+struct CheckOptions {
+  std::vector<std::string> files;
+  bool werror = false;
+  bool printSpec = false;
+};
+}  // namespace
+
 CommandRunner registerCheck(CLI::App& app) {
-  app.add_subcommand("check", "(not built yet)");
-  return [] {
-    fmt::print(stderr, "shadowc: error: 'check' is not built yet\n");
-    return 2;
+  auto opts = std::make_shared<CheckOptions>();
+  CLI::App* cmd = app.add_subcommand("check", "Check filter descriptions: diagnostics only, no output files");
+  cmd->add_option("files", opts->files, "filter description files (.shadow)");
+  cmd->add_flag("--Werror", opts->werror, "treat warnings as errors (also spelled -Werror, as in glslc)");
+  cmd->add_flag("--print-spec", opts->printSpec, "print the normalized FilterSpec of each clean file as JSON");
+  // CLI11 has no multi-letter single-dash options: glslc's -Werror arrives as an extra.
+  cmd->allow_extras();
+  return [opts, cmd] {
+    for (const std::string& extra : cmd->remaining()) {
+      if (extra == "-Werror") {
+        opts->werror = true;
+      } else {
+        fmt::print(stderr, "shadowc check: error: unknown argument '{}' (see shadowc check --help)\n", extra);
+        return 2;
+      }
+    }
+    if (opts->files.empty()) {
+      fmt::print(stderr, "shadowc check: error: no input files (shadowc check FILE.shadow...)\n");
+      return 2;
+    }
+    int exitCode = 0;
+    for (const std::string& file : opts->files) {
+      LoadOptions load;
+      load.warningsAsErrors = opts->werror;
+      const LoadResult result = loadFilterFile(file, load);
+      if (!result.diagnostics.empty()) {
+        std::fflush(stdout);
+        fmt::print(stderr, "{}", formatDiagnostics(result));
+        std::fflush(stderr);
+      }
+      if (result.errorCount() > 0) exitCode = 1;
+      if (opts->printSpec && result.spec) fmt::print("{}\n", specToJson(*result.spec).dump(2));
+    }
+    return exitCode;
   };
 }
 }  // namespace shadowc::cli

@@ -149,6 +149,10 @@ struct FilterSpec {
   FallbackSpec fallback;
   ContactSpec contact;
   bool earlyOutMinMax = false;  // min-max hierarchical shadow map (vssm sec. 6.1)
+  // Largest shadow-map side (texels) the precision checks assume: SAT sums of W^2 texels
+  // lower the EVSM exponent limit by ln(W^2)/2 (FACTS.md "Precision"). The runtime must not
+  // run the filter on a larger map. Setting `map_size`.
+  int mapSize = 2048;
 };
 
 }  // namespace shadowc

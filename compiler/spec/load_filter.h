@@ -17,7 +17,8 @@ enum class Severity { Error, Warning, Note };
 struct Diagnostic {
   Severity severity = Severity::Error;
   std::string code;        // stable code from the diagnostics table, e.g. "E0102"
-  SourceLocation location; // file, 1-based line and column
+  SourceLocation location; // file, 1-based line and column (0:0 = the whole file)
+  int length = 1;          // bytes the caret line underlines (^~~~)
   std::string message;
   std::string suggestion;  // "did you mean 'quadtree'?" or empty
 };

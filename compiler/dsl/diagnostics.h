@@ -1,0 +1,64 @@
+// Diagnostics of the front end: ids from the one table (diagnostics.def), a sink that collects
+// them with a hard cap on the error count, edit-distance suggestions, and the glslc-style
+// formatter. Tests assert on codes (Diagnostic::code), never on wording.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <fmt/format.h>
+
+#include "spec/load_filter.h"
+
+namespace shadowc::dsl {
+
+enum class DiagId {
+#define DIAGNOSTIC(code, severity, name, format) name,
+#include "dsl/diagnostics.def"
+#undef DIAGNOSTIC
+};
+
+struct DiagInfo {
+  const char* code;
+  Severity severity;
+  const char* name;
+  const char* format;
+};
+const DiagInfo& diagInfo(DiagId id);
+
+// At most this many errors are reported per file; then E0003 and the front end stops.
+inline constexpr int kMaxErrors = 20;
+
+class DiagnosticSink {
+ public:
+  DiagnosticSink(std::vector<Diagnostic>& out, std::string file, bool warningsAsErrors = false)
+      : out_(out), file_(std::move(file)), werror_(warningsAsErrors) {}
+
+  template <typename... Args>
+  void report(DiagId id, int line, int column, int length, const Args&... args) {
+    emit(id, line, column, length, fmt::format(fmt::runtime(diagInfo(id).format), args...));
+  }
+  // Attaches "did you mean '...'?" to the last reported diagnostic (when it was kept).
+  void suggest(const std::string& suggestion);
+
+  bool stopped() const { return stopped_; }  // error cap reached: callers unwind
+  int errors() const { return errors_; }
+  const std::string& file() const { return file_; }
+
+ private:
+  void emit(DiagId id, int line, int column, int length, std::string message);
+  std::vector<Diagnostic>& out_;
+  std::string file_;
+  int errors_ = 0;
+  bool werror_ = false;
+  bool stopped_ = false;
+  bool lastKept_ = false;
+};
+
+// Levenshtein distance (two rows, O(|a|*|b|)).
+int editDistance(std::string_view a, std::string_view b);
+// The closest candidate when it is close enough to be a plausible typo, else "".
+std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates);
+
+}  // namespace shadowc::dsl
