@@ -18,7 +18,20 @@ struct FrameSetup {
   glm::mat4 cameraViewProj{1};   // world -> Vulkan clip for the G-buffer
   float tanHalfFov = 1, nearPlane = 0.1f, farPlane = 100;
   uint32_t mapSize = 1024, width = 512, height = 512;
+  // Camera parts of cameraViewProj (= cameraProj * cameraView), for G-buffer shaders and tools.
+  glm::mat4 cameraView{1};       // world -> camera view (right-handed, looking down -z)
+  glm::mat4 cameraProj{1};       // Vulkan clip: y flipped (row 0 = top of the image), depth 0..1
+  float cameraNear = 0.1f, cameraFar = 100;
 };
+
+// The light's orthonormal frame: z = light.direction, y = light.up made orthogonal to z,
+// x = y cross z. The rectangle's sides run along x and y; lightView maps (x, y, z) to view axes.
+struct LightBasis {
+  glm::vec3 x{1, 0, 0}, y{0, 1, 0}, z{0, 0, 1};
+};
+LightBasis lightBasis(const AreaLight& light);
+// World -> light view (origin at the light centre, +z along the light axis; frame.glsl).
+glm::mat4 lightViewMatrix(const AreaLight& light);
 
 // The light frustum covers the scene's bounds as seen from the light centre; near/far are
 // fitted to the bounds (near clamped > 0).

@@ -4,6 +4,8 @@
 #pragma once
 
 #include <cstdint>
+#include <filesystem>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -37,6 +39,7 @@ struct Camera {
 
 struct Scene {
   std::string name;
+  std::string description;  // free text (docs, reports)
   Camera camera;
   AreaLight light;
   std::vector<Mesh> meshes;
@@ -48,10 +51,30 @@ struct SceneError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// Axis-aligned bounds of every mesh vertex (world space). Empty scene: min > max.
+struct Bounds {
+  glm::vec3 min{std::numeric_limits<float>::max()};
+  glm::vec3 max{-std::numeric_limits<float>::max()};
+  bool empty() const { return min.x > max.x; }
+  glm::vec3 center() const { return 0.5f * (min + max); }
+  float diagonal() const { return empty() ? 0.0f : glm::length(max - min); }
+};
+Bounds sceneBounds(const Scene& scene);
+
 // A built-in name (see builtinSceneNames()) or a path to a .json scene. Throws SceneError
 // with one clear message (unknown name with suggestions, missing file, bad JSON with the
 // field, mesh that fails to load with assimp's reason).
 Scene loadScene(const std::string& nameOrPath);
 std::vector<std::string> builtinSceneNames();
+
+// The JSON text of a built-in scene (the format of docs/scenes.md, 2-space indent, trailing
+// newline): what samples/scenes/<name>.json holds. Throws SceneError for an unknown name.
+std::string builtinSceneJson(const std::string& name);
+// One line saying what makes a built-in scene hard ("" for an unknown name).
+std::string builtinSceneDescription(const std::string& name);
+
+// Parses scene JSON text. `sourceLabel` names the text in messages (a file path);
+// mesh paths are resolved against `baseDir`.
+Scene parseScene(const std::string& jsonText, const std::string& sourceLabel, const std::filesystem::path& baseDir);
 
 }  // namespace shadowc::rt
