@@ -9,7 +9,6 @@ PKGS=(
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools   # loader, lavapipe, Khronos layers
   libglm-dev libfmt-dev nlohmann-json3-dev libcli11-dev libstb-dev          # math, format, JSON, CLI, PNG
   libembree-dev libtbb-dev libassimp-dev                                    # ray-traced reference, meshes
-  libxxhash-dev                                                             # scene/cache hashes (header-only use)
   libgtest-dev libgmock-dev libbenchmark-dev                                # tests and benchmarks
 )
 missing=()
