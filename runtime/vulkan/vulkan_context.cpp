@@ -203,6 +203,8 @@ VulkanContext::VulkanContext(const VulkanOptions& options)
     VkPhysicalDeviceFeatures enabled{};
     // Lets templates declare writeonly images without a format qualifier where convenient.
     enabled.shaderStorageImageWriteWithoutFormat = supported.shaderStorageImageWriteWithoutFormat;
+    // rg32f, r16f, r16 (unorm), rg32ui ... as storage images need the extended formats.
+    enabled.shaderStorageImageExtendedFormats = supported.shaderStorageImageExtendedFormats;
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queueInfo{VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO};
     queueInfo.queueFamilyIndex = queueFamily_;

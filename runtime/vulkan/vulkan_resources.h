@@ -84,4 +84,9 @@ UniqueShaderModule createShaderModule(const VulkanContext& ctx, const uint32_t* 
 // where the cost does not matter and a missed hazard would.
 void fullBarrier(VkCommandBuffer cmd);
 
+// A layout transition (content kept unless oldLayout is UNDEFINED) with its memory dependency.
+void imageBarrier(VkCommandBuffer cmd, VkImage image, const VkImageSubresourceRange& range, VkImageLayout oldLayout,
+                  VkImageLayout newLayout, VkPipelineStageFlags srcStage, VkAccessFlags srcAccess,
+                  VkPipelineStageFlags dstStage, VkAccessFlags dstAccess);
+
 }  // namespace shadowc::rt

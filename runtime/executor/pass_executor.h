@@ -1,0 +1,73 @@
+// Runs a compiled filter: every image, sampler, pipeline and descriptor set the manifest
+// lists, the passes in manifest order, per-pass GPU timestamps. Driven by the manifest only;
+// knows nothing about shadow techniques (DESIGN.md). Mapping and timing: docs/runtime.md.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "manifest/frame_uniforms.h"
+#include "manifest/manifest.h"
+#include "runtime/executor/host_image.h"
+
+namespace shadowc::rt {
+
+class VulkanContext;
+
+// A manifest the device cannot run as written (unknown image, missing SPIR-V, unsupported
+// format, shader/manifest mismatch): the message names the pass.
+struct ExecutorError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct PassTiming {
+  std::string name;
+  std::string kind;
+  double medianMs = 0;
+  double minMs = 0;
+};
+
+struct TimingResult {
+  std::vector<PassTiming> passes;  // manifest order
+  double totalMs = 0;              // median over runs of (last pass end - first pass start)
+  int warmup = 0, runs = 0;
+};
+
+// Workgroup counts for a pass: Texels -> ceil(w/lx) x ceil(h/ly); Rows -> one invocation per
+// row along x (gl_GlobalInvocationID.x = row), ceil(h/lx) groups; Columns -> one per column,
+// ceil(w/lx) groups. z is always 1 (layered passes loop over layers in the shader).
+std::array<uint32_t, 3> dispatchGroups(const Pass& pass, uint32_t mapSize, uint32_t screenWidth, uint32_t screenHeight);
+// Mip levels of an image: mipLevels, or the full chain when 0.
+uint32_t mipLevelCount(const ImageDesc& image, uint32_t width, uint32_t height);
+
+class PassExecutor {
+ public:
+  PassExecutor(VulkanContext& ctx, const Manifest& manifest, const std::filesystem::path& manifestDir, uint32_t mapSize,
+               uint32_t screenWidth, uint32_t screenHeight);
+  ~PassExecutor();
+  PassExecutor(const PassExecutor&) = delete;
+  PassExecutor& operator=(const PassExecutor&) = delete;
+
+  void setFrame(const ShadowcFrame& frame);
+  // Level 0, all layers; size, layers and format must match the manifest image.
+  void upload(const std::string& image, const HostImage& data);
+  void run();  // one execution of every pass, waits for completion
+  // `warmup` untimed runs (lavapipe JIT-compiles on the first dispatch), then `runs` timed runs.
+  TimingResult time(int warmup, int runs);
+  HostImage download(const std::string& image, uint32_t level = 0, uint32_t layer = 0);
+
+  const Manifest& manifest() const;
+  // Names of the images with a role (the harness's inputs/outputs); empty when absent.
+  std::string imageWithRole(ImageRole role) const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace shadowc::rt
