@@ -35,8 +35,9 @@ std::string tidyPreprocessed(const std::string& text) {
   for (size_t i = 0; i < lines.size();) {
     const std::string& l = lines[i];
     if (isLineDirective(l)) {
-      // "#line N" or "#line N \"file\"": the following line is number N.
-      out += l + "\n";
+      // "#line N" or "#line N \"file\"": the following line is number N. A directive that
+      // another one follows at once says nothing.
+      if (i + 1 >= lines.size() || !isLineDirective(lines[i + 1])) out += l + "\n";
       next = std::atoi(std::string(trimLeft(l).substr(5)).c_str());
       ++i;
       continue;

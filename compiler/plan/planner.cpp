@@ -96,14 +96,18 @@ class Planner {
     const bool mips = spec_.prefilter.mips;
     const int levels = mips ? pyramidLevels(spec_) : 1;
     addImage({"moments", momentsFormat(spec_), kMap, levels, layers, ImageRole::Internal, true});
+    const bool lloyd = layers > 1 && spec_.moments.split == SplitPlacement::Lloyd;
+    if (lloyd) planLloyd(layers);
 
     // moments: depth -> warped (per-layer remapped) moments.
     Defines d = momentsDefines();
     d.emplace_back("SHADOWC_SPLITS", glslFloatArray(layerSplits(spec_)));
     d.emplace_back("SHADOWC_OVERLAP", glslFloat(spec_.moments.overlap));
+    d.emplace_back("SHADOWC_SPLITS_FROM_IMAGE", lloyd ? "1" : "0");
     Pass& m = addPass("moments", "moments", {8, 8, 1}, {kMap, DispatchMode::Texels},
                       {"passes/moments.comp", "moments", std::move(d), false});
     m.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "moments", Access::StorageWrite, 0}};
+    if (lloyd) m.bindings.push_back({2, "splits", Access::Sampled, -1});
 
     if (spec_.prefilter.blur != BlurKind::None && spec_.prefilter.blurRadius > 0) {
       addImage({"moments_tmp", momentsFormat(spec_), kMap, 1, layers, ImageRole::Internal, false});
@@ -129,6 +133,22 @@ class Planner {
     }
 
     if (spec_.storage.sat != SatKind::None) planSat(layers);
+  }
+
+  // Lloyd split placement (lauritzen2008 sec. 4.1) runs before the moments pass, which reads
+  // the splits. One workgroup: dispatch extent 1x1 (shift 16) with local size 256.
+  // `splits` must be layers+1 texels wide; sizes are relative to the map, so the shift keeps
+  // it wide enough for every map of at least 64 texels (the pyramid's minimum as well).
+  void planLloyd(int layers) {
+    int shift = 6;
+    while (shift > 0 && (64 >> shift) < layers + 1) --shift;
+    addImage({"splits", ImageFormat::R32F, {SizeDomain::Map, shift}, 1, 1, ImageRole::Internal, false});
+    Pass& p = addPass("lloyd", "lloyd", {256, 1, 1}, {{SizeDomain::Map, 16}, DispatchMode::Texels},
+                      {"passes/lloyd.comp", "lloyd",
+                       {{"SHADOWC_LAYERS", std::to_string(layers)},
+                        {"SHADOWC_LLOYD_ITERATIONS", std::to_string(std::max(1, spec_.moments.lloydIterations))}},
+                       false});
+    p.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "splits", Access::StorageWrite, 0}};
   }
 
   void planSat(int layers) {
@@ -172,6 +192,7 @@ class Planner {
     if (has("moments")) s.bindings.push_back({5, "moments", Access::Sampled, -1});
     if (has("sat")) s.bindings.push_back({6, "sat", Access::Sampled, -1});
     if (has("minmax")) s.bindings.push_back({7, "minmax", Access::Sampled, -1});
+    if (has("splits")) s.bindings.push_back({8, "splits", Access::Sampled, -1});
   }
 
   const FilterSpec& spec_;

@@ -9,7 +9,7 @@
 
 namespace shadowc {
 
-// Pass order: moments, blur_h, blur_v, mip1..mipK, sat_rows, sat_columns, minmax0..minmaxK, shade.
+// Pass order: lloyd, moments, blur_h, blur_v, mip1..mipK, sat_rows, sat_columns, minmax0..minmaxK, shade.
 PassGraph planPasses(const FilterSpec& spec);
 
 // Levels of the `moments` mip chain and of the `minmax` pyramid: K + 1 with
@@ -19,7 +19,7 @@ PassGraph planPasses(const FilterSpec& spec);
 int pyramidLevels(const FilterSpec& spec);
 
 // The layer boundaries the passes fold in: spec.moments.splits when it has layers+1 entries,
-// else uniform. (Lloyd placement is not computed on the GPU yet: it falls back to these.)
+// else uniform. (Lloyd placement computes them on the GPU: lloyd pass, `splits` image.)
 std::vector<double> layerSplits(const FilterSpec& spec);
 
 }  // namespace shadowc

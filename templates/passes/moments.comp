@@ -28,7 +28,7 @@ layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 layout(set = 0, binding = 0) uniform sampler2D shadowDepth;
 layout(set = 0, binding = 1, SHADOWC_MOMENTS_FORMAT) writeonly uniform image2DArray momentsOut;
 #if SHADOWC_SPLITS_FROM_IMAGE
-layout(set = 0, binding = 2) uniform sampler2DArray splitsImage;  // 1x1, layer i = split i
+layout(set = 0, binding = 2) uniform sampler2D splitsImage;  // r32f, texel (i, 0) = split i (lloyd.comp)
 #endif
 
 void main() {
@@ -44,8 +44,8 @@ void main() {
 #endif
   for (int i = 0; i < SHADOWC_LAYERS; ++i) {
 #if SHADOWC_SPLITS_FROM_IMAGE
-    const float lo = texelFetch(splitsImage, ivec3(0, 0, i), 0).r;
-    const float hi = texelFetch(splitsImage, ivec3(0, 0, i + 1), 0).r;
+    const float lo = texelFetch(splitsImage, ivec2(i, 0), 0).r;
+    const float hi = texelFetch(splitsImage, ivec2(i + 1, 0), 0).r;
 #else
     const float lo = splits[i], hi = splits[i + 1];
 #endif

@@ -26,3 +26,13 @@ TEST(GlslTidy, StripLineDirectivesRemovesThemAndCollapsesBlanks) {
 
 }  // namespace
 }  // namespace shadowc
+
+namespace shadowc {
+namespace {
+
+TEST(GlslTidy, ADirectiveOverriddenByTheNextIsDropped) {
+  EXPECT_EQ(tidyPreprocessed("a\n#line 4\n#line 1 \"f.glsl\"\nb\n"), "a\n#line 1 \"f.glsl\"\nb\n");
+}
+
+}  // namespace
+}  // namespace shadowc

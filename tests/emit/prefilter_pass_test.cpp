@@ -21,6 +21,9 @@ std::vector<FilterSpec> variants() {
     s.storage.format = StorageFormat::Unorm16;
     v.push_back(s);
   }
+  FilterSpec lloyd = test::layeredEvsmSpec();
+  lloyd.moments.split = SplitPlacement::Lloyd;
+  v.push_back(lloyd);
   for (SatKind k : {SatKind::Fp32Centered, SatKind::Fp32Naive}) {
     FilterSpec s = test::vssmInt32Spec();
     s.storage.sat = k;

@@ -151,3 +151,37 @@ TEST(Planner, UniformSplitsWhenTheSpecHasNone) {
 
 }  // namespace
 }  // namespace shadowc
+
+namespace shadowc {
+namespace {
+
+TEST(Planner, LloydPlacementRunsFirstAndFeedsMomentsAndShade) {
+  FilterSpec spec = test::layeredEvsmSpec();
+  spec.moments.split = SplitPlacement::Lloyd;
+  spec.moments.lloydIterations = 5;
+  const PassGraph g = planPasses(spec);
+  ASSERT_GE(g.manifest.passes.size(), 3u);
+  EXPECT_EQ(g.manifest.passes[0].name, "lloyd");
+  EXPECT_EQ(g.manifest.passes[1].name, "moments");
+  const ImageDesc* splits = image(g, "splits");
+  ASSERT_NE(splits, nullptr);
+  EXPECT_EQ(splits->format, ImageFormat::R32F);
+  // Wide enough for layers + 1 = 4 texels on the smallest (64) map.
+  EXPECT_GE(extentOf(splits->size, 64, 1, 1)[0], 4u);
+  EXPECT_EQ(g.manifest.passes[1].bindings.at(2).image, "splits");
+  EXPECT_EQ(pass(g, "shade").bindings.back().binding, 8u);
+  EXPECT_EQ(pass(g, "shade").bindings.back().image, "splits");
+  // One workgroup: a 1x1 extent at any map size.
+  EXPECT_EQ(extentOf(g.manifest.passes[0].dispatch.size, 4096, 1, 1), (std::array<uint32_t, 2>{1, 1}));
+}
+
+TEST(Planner, LloydWithOneLayerPlansNothingExtra) {
+  FilterSpec spec = test::layeredEvsmSpec();
+  spec.moments.split = SplitPlacement::Lloyd;
+  spec.moments.layers = 1;
+  spec.moments.splits = {0.0, 1.0};
+  EXPECT_EQ(image(planPasses(spec), "splits"), nullptr);
+}
+
+}  // namespace
+}  // namespace shadowc
