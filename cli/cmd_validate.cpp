@@ -1,14 +1,26 @@
-// PLACEHOLDER: replaced by the real command during the first build-out.
-#include <fmt/core.h>
-
+// `shadowc validate FILTER.shadow --scene NAME|FILE`: compile, run on the Vulkan device with
+// per-pass GPU timing, compare against the Embree ground truth. See docs/cli.md.
 #include "cli/commands.h"
+#include "cli/validation_run.h"
 
 namespace shadowc::cli {
+
 CommandRunner registerValidate(CLI::App& app) {
-  app.add_subcommand("validate", "(not built yet)");
-  return [] {
-    fmt::print(stderr, "shadowc: error: 'validate' is not built yet\n");
-    return 2;
-  };
+  auto o = std::make_shared<ValidationOptions>();
+  CLI::App* sub = app.add_subcommand("validate", "Run a filter on a scene: per-pass GPU times and error vs. ray tracing");
+  sub->add_option("filter", o->filterPath, "Filter description (.shadow)")->required();
+  sub->add_option("--scene", o->scene, "Built-in scene name or scene .json file")->required();
+  sub->add_option("--size", o->size, "Screen width and height in pixels")->capture_default_str();
+  sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
+  sub->add_option("--samples", o->samples, "Reference light samples per axis (N x N)")->capture_default_str();
+  sub->add_option("--json", o->jsonOut, "Write metrics and timings as JSON");
+  sub->add_option("--images", o->imagesDir, "Write result/reference/error/comparison PNGs to this directory");
+  sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");
+  sub->add_flag("--validate", o->validation, "Enable the Khronos validation layer; any message fails the run");
+  sub->add_option("--runs", o->runs, "Timed runs (the median is reported)")->capture_default_str();
+  sub->add_option("--warmup", o->warmup, "Untimed warm-up runs (lavapipe JIT-compiles on first use)")->capture_default_str();
+  sub->add_flag("--no-cache", [o](int64_t) { o->useCache = false; }, "Do not read or write the reference cache");
+  return [o] { return runValidation(*o); };
 }
+
 }  // namespace shadowc::cli

@@ -166,4 +166,14 @@ std::vector<float> HostImage::channel(uint32_t c, uint32_t layer) const {
   return out;
 }
 
+std::vector<float> HostImage::floats() const {
+  std::vector<float> out;
+  out.reserve(size_t(width) * height * layers * channels());
+  for (uint32_t l = 0; l < layers; ++l)
+    for (uint32_t y = 0; y < height; ++y)
+      for (uint32_t x = 0; x < width; ++x)
+        for (uint32_t c = 0; c < channels(); ++c) out.push_back(texel(x, y, c, l));
+  return out;
+}
+
 }  // namespace shadowc::rt

@@ -31,6 +31,8 @@ struct HostImage {
   uint32_t texelUint(uint32_t x, uint32_t y, uint32_t channel = 0, uint32_t layer = 0) const;  // *UI formats
   // One channel of one layer as floats, row-major (width*height values).
   std::vector<float> channel(uint32_t channel = 0, uint32_t layer = 0) const;
+  // Every channel of every texel as floats, interleaved (the layout of an fp32 image's bytes).
+  std::vector<float> floats() const;
 };
 
 float halfToFloat(uint16_t h);

@@ -219,7 +219,7 @@ struct PassExecutor::Impl {
 
     VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     q.queryType = VK_QUERY_TYPE_TIMESTAMP;
-    q.queryCount = std::max<uint32_t>(2, 2 * uint32_t(manifest.passes.size()));
+    q.queryCount = queryCount();
     VkQueryPool qp = VK_NULL_HANDLE;
     checkVk(vkCreateQueryPool(ctx.device(), &q, nullptr, &qp), "vkCreateQueryPool");
     queries = UniqueQueryPool(ctx.device(), qp);
@@ -367,7 +367,18 @@ struct PassExecutor::Impl {
     return r;
   }
 
-  // One reusable command buffer: every pass with a timestamp pair around its dispatch.
+  // One reusable command buffer: a stamp before the first pass and one after each pass's
+  // closing barrier; pass i's time is stamp[i+1] - stamp[i]. Each stamp is followed by a
+  // second, throw-away stamp. Why: lavapipe (Mesa 22.3) takes a timestamp's value only when
+  // its command stream is next flushed, and a non-TOP_OF_PIPE vkCmdWriteTimestamp flushes
+  // first; without the extra stamp every value was taken after the *next* dispatch, which
+  // charged each pass's work to its neighbour (measured: moments 0.02 ms, the next pass +7 ms).
+  // On other drivers the extra stamp costs nothing measurable.
+  void stamp(uint32_t point) {
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 2 * point);
+    vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 2 * point + 1);
+  }
+
   void record() {
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = ctx.commandPool();
@@ -376,28 +387,29 @@ struct PassExecutor::Impl {
     checkVk(vkAllocateCommandBuffers(ctx.device(), &alloc, &cmd), "vkAllocateCommandBuffers");
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
     checkVk(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+    vkCmdResetQueryPool(cmd, queries, 0, queryCount());
     fullBarrier(cmd);  // uploads and the previous run happen before this one
-    vkCmdResetQueryPool(cmd, queries, 0, std::max<uint32_t>(2, 2 * uint32_t(passes.size())));
+    stamp(0);
     for (size_t i = 0; i < passes.size(); ++i) {
       const PassResource& p = passes[i];
-      if (i > 0) {
-        // Pass i reads (or overwrites) what pass i-1 wrote.
-        VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-        b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-        b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-        vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, 0, 1, &b, 0,
-                             nullptr, 0, nullptr);
-      }
-      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, queries, uint32_t(2 * i));
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
       vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, 0, 1, &p.set, 0, nullptr);
       if (!p.push.empty())
         vkCmdPushConstants(cmd, p.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, uint32_t(p.push.size()), p.push.data());
       vkCmdDispatch(cmd, p.groups[0], p.groups[1], p.groups[2]);
-      vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, uint32_t(2 * i + 1));
+      // The next pass reads (or overwrites) what this one wrote; the stamp waits for it too.
+      VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+      b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+      b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 1, &b, 0,
+                           nullptr, 0, nullptr);
+      stamp(uint32_t(i + 1));
     }
     checkVk(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
   }
+
+  uint32_t queryCount() const { return 2 * (uint32_t(manifest.passes.size()) + 1); }
 };
 
 PassExecutor::PassExecutor(VulkanContext& ctx, const Manifest& manifest, const std::filesystem::path& manifestDir,
@@ -464,15 +476,16 @@ TimingResult PassExecutor::time(int warmup, int runs) {
   std::vector<std::vector<double>> perPass(n);
   std::vector<double> totals;
   const double period = impl_->ctx.properties().limits.timestampPeriod;  // ns per tick
-  std::vector<uint64_t> ticks(2 * n);
+  std::vector<uint64_t> ticks(2 * (n + 1));
   for (int r = 0; r < result.runs; ++r) {
     run();
     if (n == 0) continue;
-    checkVk(vkGetQueryPoolResults(impl_->ctx.device(), impl_->queries, 0, uint32_t(2 * n), ticks.size() * sizeof(uint64_t),
-                                  ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+    checkVk(vkGetQueryPoolResults(impl_->ctx.device(), impl_->queries, 0, uint32_t(ticks.size()),
+                                  ticks.size() * sizeof(uint64_t), ticks.data(), sizeof(uint64_t),
+                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
             "vkGetQueryPoolResults");
-    for (size_t i = 0; i < n; ++i) perPass[i].push_back(double(ticks[2 * i + 1] - ticks[2 * i]) * period * 1e-6);
-    totals.push_back(double(ticks[2 * n - 1] - ticks[0]) * period * 1e-6);
+    for (size_t i = 0; i < n; ++i) perPass[i].push_back(double(ticks[2 * (i + 1)] - ticks[2 * i]) * period * 1e-6);
+    totals.push_back(double(ticks[2 * n] - ticks[0]) * period * 1e-6);
   }
   for (size_t i = 0; i < n; ++i) {
     const Pass& p = impl_->manifest.passes[i];

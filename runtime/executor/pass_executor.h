@@ -34,7 +34,7 @@ struct PassTiming {
 
 struct TimingResult {
   std::vector<PassTiming> passes;  // manifest order
-  double totalMs = 0;              // median over runs of (last pass end - first pass start)
+  double totalMs = 0;              // median over runs of (stamp after the last pass - stamp before the first)
   int warmup = 0, runs = 0;
 };
 

@@ -1,0 +1,31 @@
+// The body of `shadowc validate` and `shadowc demo`: compile a filter in process, rasterize a
+// scene, run the passes on the Vulkan device with per-pass timing, trace the Embree reference
+// and report the error. One place so that both commands measure the same way.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+namespace shadowc::cli {
+
+struct ValidationOptions {
+  std::string filterPath;    // a .shadow file, or a label when filterSource is set
+  std::string filterSource;  // the filter text itself (demo: embedded sample); empty = read filterPath
+  std::string scene = "two_planes";
+  uint32_t size = 512;   // screen width = height
+  uint32_t map = 1024;   // shadow-map side
+  int samples = 16;      // reference light samples per axis
+  std::string jsonOut;   // empty = none
+  std::string imagesDir; // empty = none
+  std::string device;    // --device
+  bool validation = false;
+  int runs = 10, warmup = 3;
+  bool useCache = true;  // reference cache
+};
+
+// Prints the report on stdout (progress on stderr). Returns the process exit code; throws
+// on runtime errors (the caller prints "shadowc: error: ...").
+int runValidation(const ValidationOptions& options);
+
+}  // namespace shadowc::cli
