@@ -26,6 +26,16 @@ std::vector<std::string> splitLines(const std::string& text) {
   return lines;
 }
 
+// Appends a #line directive; one without a file name that it directly follows says nothing.
+void appendDirective(std::string& out, const std::string& directive) {
+  if (out.size() >= 2) {
+    const size_t start = out.rfind('\n', out.size() - 2);
+    const std::string_view last = std::string_view(out).substr(start == std::string::npos ? 0 : start + 1);
+    if (isLineDirective(last) && last.find('"') == std::string_view::npos) out.resize(out.size() - last.size());
+  }
+  out += directive + "\n";
+}
+
 }  // namespace
 
 std::string tidyPreprocessed(const std::string& text) {
@@ -35,9 +45,8 @@ std::string tidyPreprocessed(const std::string& text) {
   for (size_t i = 0; i < lines.size();) {
     const std::string& l = lines[i];
     if (isLineDirective(l)) {
-      // "#line N" or "#line N \"file\"": the following line is number N. A directive that
-      // another one follows at once says nothing.
-      if (i + 1 >= lines.size() || !isLineDirective(lines[i + 1])) out += l + "\n";
+      // "#line N" or "#line N \"file\"": the following line is number N.
+      appendDirective(out, l);
       next = std::atoi(std::string(trimLeft(l).substr(5)).c_str());
       ++i;
       continue;
@@ -50,7 +59,7 @@ std::string tidyPreprocessed(const std::string& text) {
       if (run == 1) {
         out += "\n";
       } else if (!isLineDirective(lines[j])) {
-        out += "#line " + std::to_string(next + run) + "\n";
+        appendDirective(out, "#line " + std::to_string(next + run));
       }
       next += run;
       i = j;

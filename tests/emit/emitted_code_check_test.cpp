@@ -1,0 +1,113 @@
+// CHECK-style assertions on emitted code, where a whole golden file would be brittle: each
+// states one property of specialization (absent features, unrolled loops, folded constants).
+#include <gtest/gtest.h>
+
+#include "emit/emit_support.h"
+#include "plan/test_specs.h"
+
+namespace shadowc {
+namespace {
+
+std::string file(const FilterEmitResult& r, const std::string& name) {
+  for (const auto& f : r.files)
+    if (f.name == name) return f.bytes;
+  ADD_FAILURE() << "no emitted file " << name;
+  return {};
+}
+
+// The body of `void name(...) { ... }` in GLSL text (brace matching).
+std::string functionBody(const std::string& glsl, const std::string& name) {
+  const size_t at = glsl.find("void " + name + "(");
+  if (at == std::string::npos) return {};
+  size_t i = glsl.find('{', at), depth = 0;
+  const size_t start = i;
+  for (; i < glsl.size(); ++i) {
+    if (glsl[i] == '{') ++depth;
+    if (glsl[i] == '}' && --depth == 0) break;
+  }
+  return glsl.substr(start, i - start + 1);
+}
+
+FilterSpec vssmTraversal(QuadtreeTraversal t) {
+  FilterSpec s = test::vssmInt32Spec();
+  s.earlyOutMinMax = false;
+  s.kernel.traversal = t;
+  return s;
+}
+
+TEST(EmittedCode, DepthPcfShadeHasNoMomentsOrSatCode) {
+  const FilterEmitResult r = emitFilter(test::pcfSpec());
+  ASSERT_TRUE(r.ok) << r.log;
+  const std::string shade = file(r, "shade.glsl");
+  ASSERT_FALSE(shade.empty());
+  for (const char* absent : {"usampler2DArray", "sampler2DArray", "summedArea", "chebyshev", "binding = 5",
+                             "binding = 6", "binding = 7"})
+    EXPECT_EQ(shade.find(absent), std::string::npos) << "PCF shade must not contain '" << absent << "'";
+  EXPECT_NE(shade.find("binding = 4"), std::string::npos);  // shadow_depth
+}
+
+TEST(EmittedCode, VssmShadeReadsTheIntegerSat) {
+  const FilterEmitResult r = emitFilter(test::vssmInt32Spec());
+  ASSERT_TRUE(r.ok) << r.log;
+  EXPECT_NE(file(r, "shade.glsl").find("usampler2DArray"), std::string::npos);
+}
+
+TEST(EmittedCode, UnrolledQuadtreeTraversalHasNoLoop) {
+  const FilterEmitResult r = emitFilter(vssmTraversal(QuadtreeTraversal::Unrolled));
+  ASSERT_TRUE(r.ok) << r.log;
+  const std::string shade = file(r, "shade.glsl");
+  const std::string body = functionBody(shade, "shadowc_qtUnrolledKernel");
+  ASSERT_FALSE(body.empty()) << "unrolled traversal function missing";
+  EXPECT_EQ(body.find("for"), std::string::npos);
+  EXPECT_EQ(body.find("while"), std::string::npos);
+  EXPECT_EQ(shade.find("shadowc_qtNext"), std::string::npos) << "no Next table when unrolled";
+}
+
+// Sibling: the table-driven traversal does carry the Next/Child tables (Algorithm 2).
+TEST(EmittedCode, TableQuadtreeTraversalCarriesNextChildTables) {
+  const FilterEmitResult r = emitFilter(vssmTraversal(QuadtreeTraversal::Table));
+  ASSERT_TRUE(r.ok) << r.log;
+  const std::string shade = file(r, "shade.glsl");
+  EXPECT_NE(shade.find("shadowc_qtNext"), std::string::npos);
+  EXPECT_NE(shade.find("shadowc_qtChild"), std::string::npos);
+  EXPECT_EQ(shade.find("shadowc_qtUnrolledKernel"), std::string::npos);
+}
+
+TEST(EmittedCode, EmittedGlslIsPreprocessed) {
+  for (const FilterSpec& spec : {test::vssmInt32Spec(), test::layeredEvsmSpec(), test::blurMipSpec()}) {
+    const FilterEmitResult r = emitFilter(spec);
+    ASSERT_TRUE(r.ok) << r.log;
+    for (const auto& f : r.files) {
+      if (!f.name.ends_with(".glsl")) continue;
+      for (const char* absent : {"#define", "#ifdef", "#ifndef", "#if ", "#include", "@shadowc:specialize"})
+        EXPECT_EQ(f.bytes.find(absent), std::string::npos) << spec.name << "/" << f.name << " contains " << absent;
+    }
+  }
+}
+
+TEST(EmittedCode, LookupFileIsIncludableAndDescribedInTheManifest) {
+  const FilterSpec spec = test::vssmInt32Spec();
+  const FilterEmitResult r = emitFilter(spec);
+  ASSERT_TRUE(r.ok) << r.log;
+  const std::string lookup = file(r, lookupFileName(spec.name));
+  EXPECT_EQ(lookup.find("\n#version"), std::string::npos);  // directives start lines
+  EXPECT_EQ(lookup.find("\n#line"), std::string::npos);
+  EXPECT_NE(lookup.find(r.manifest.shade.signature), std::string::npos) << r.manifest.shade.signature;
+  EXPECT_EQ(r.manifest.shade.glsl, lookupFileName(spec.name));
+  for (const Binding& b : r.manifest.shade.bindings) EXPECT_TRUE(b.binding == 0 || b.binding >= 4) << b.binding;
+}
+
+TEST(EmittedCode, OptimizationLevelChangesSpirvAndTheHashButNotTheGlsl) {
+  const FilterSpec spec = test::vssmInt32Spec();
+  EmitOptions o0;
+  o0.optimize = false;
+  const FilterEmitResult a = emitFilter(spec), b = emitFilter(spec, o0);
+  ASSERT_TRUE(a.ok && b.ok) << a.log << b.log;
+  EXPECT_EQ(file(a, "shade.glsl"), file(b, "shade.glsl"));
+  EXPECT_NE(file(a, "shade.spv"), file(b, "shade.spv"));
+  EXPECT_LT(file(a, "shade.spv").size(), file(b, "shade.spv").size()) << "the -O recipe should shrink the module";
+  EXPECT_NE(a.manifest.contentHash, b.manifest.contentHash);
+}
+
+}  // namespace
+}  // namespace shadowc

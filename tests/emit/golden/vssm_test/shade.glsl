@@ -1,0 +1,428 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#line 51
+const ivec3 shadowc_qtNode[85]= ivec3[](ivec3(0, 0, 1), ivec3(0, 0, 2), ivec3(0, 0, 4), ivec3(0, 0, 8), ivec3(1, 0, 8), ivec3(0, 1, 8), ivec3(1, 1, 8), ivec3(1, 0, 4), ivec3(2, 0, 8), ivec3(3, 0, 8), ivec3(2, 1, 8), ivec3(3, 1, 8), ivec3(0, 1, 4), ivec3(0, 2, 8), ivec3(1, 2, 8), ivec3(0, 3, 8), ivec3(1, 3, 8), ivec3(1, 1, 4), ivec3(2, 2, 8), ivec3(3, 2, 8), ivec3(2, 3, 8), ivec3(3, 3, 8), ivec3(1, 0, 2), ivec3(2, 0, 4), ivec3(4, 0, 8), ivec3(5, 0, 8), ivec3(4, 1, 8), ivec3(5, 1, 8), ivec3(3, 0, 4), ivec3(6, 0, 8), ivec3(7, 0, 8), ivec3(6, 1, 8), ivec3(7, 1, 8), ivec3(2, 1, 4), ivec3(4, 2, 8), ivec3(5, 2, 8), ivec3(4, 3, 8), ivec3(5, 3, 8), ivec3(3, 1, 4), ivec3(6, 2, 8), ivec3(7, 2, 8), ivec3(6, 3, 8), ivec3(7, 3, 8), ivec3(0, 1, 2), ivec3(0, 2, 4), ivec3(0, 4, 8), ivec3(1, 4, 8), ivec3(0, 5, 8), ivec3(1, 5, 8), ivec3(1, 2, 4), ivec3(2, 4, 8), ivec3(3, 4, 8), ivec3(2, 5, 8), ivec3(3, 5, 8), ivec3(0, 3, 4), ivec3(0, 6, 8), ivec3(1, 6, 8), ivec3(0, 7, 8), ivec3(1, 7, 8), ivec3(1, 3, 4), ivec3(2, 6, 8), ivec3(3, 6, 8), ivec3(2, 7, 8), ivec3(3, 7, 8), ivec3(1, 1, 2), ivec3(2, 2, 4), ivec3(4, 4, 8), ivec3(5, 4, 8), ivec3(4, 5, 8), ivec3(5, 5, 8), ivec3(3, 2, 4), ivec3(6, 4, 8), ivec3(7, 4, 8), ivec3(6, 5, 8), ivec3(7, 5, 8), ivec3(2, 3, 4), ivec3(4, 6, 8), ivec3(5, 6, 8), ivec3(4, 7, 8), ivec3(5, 7, 8), ivec3(3, 3, 4), ivec3(6, 6, 8), ivec3(7, 6, 8), ivec3(6, 7, 8), ivec3(7, 7, 8));
+const int shadowc_qtChild[85]= int[](1, 2, 3, - 1, - 1, - 1, - 1, 8, - 1, - 1, - 1, - 1, 13, - 1, - 1, - 1, - 1, 18, - 1, - 1, - 1, - 1, 23, 24, - 1, - 1, - 1, - 1, 29, - 1, - 1, - 1, - 1, 34, - 1, - 1, - 1, - 1, 39, - 1, - 1, - 1, - 1, 44, 45, - 1, - 1, - 1, - 1, 50, - 1, - 1, - 1, - 1, 55, - 1, - 1, - 1, - 1, 60, - 1, - 1, - 1, - 1, 65, 66, - 1, - 1, - 1, - 1, 71, - 1, - 1, - 1, - 1, 76, - 1, - 1, - 1, - 1, 81, - 1, - 1, - 1, - 1);
+const int shadowc_qtNext[85]= int[](- 1, 22, 7, 4, 5, 6, 7, 12, 9, 10, 11, 12, 17, 14, 15, 16, 17, 22, 19, 20, 21, 22, 43, 28, 25, 26, 27, 28, 33, 30, 31, 32, 33, 38, 35, 36, 37, 38, 43, 40, 41, 42, 43, 64, 49, 46, 47, 48, 49, 54, 51, 52, 53, 54, 59, 56, 57, 58, 59, 64, 61, 62, 63, 64, - 1, 70, 67, 68, 69, 70, 75, 72, 73, 74, 75, 80, 77, 78, 79, 80, - 1, 82, 83, 84, - 1);
+#line 1 "frame.glsl"
+#line 19
+layout(set = 0, binding = 0, std140)uniform ShadowcFrame {
+  mat4 lightView;
+  vec4 lightParams;
+  vec4 lightShape;
+  vec4 mapInfo;
+  vec4 screenInfo;
+} frame;
+#line 28
+vec4 shadowc_lightSpace(vec3 worldPos){
+  vec3 p =(frame . lightView * vec4(worldPos, 1.0)). xyz;
+  vec2 uv = 0.5 + 0.5 * p . xy /(p . z * frame . lightParams . x);
+  float d =(p . z - frame . lightParams . y)/(frame . lightParams . z - frame . lightParams . y);
+  return vec4(uv, d, p . z);
+}
+
+float shadowc_viewZ(float d){ return frame . lightParams . y + d *(frame . lightParams . z - frame . lightParams . y);}
+#line 38
+float shadowc_lightSizeUV(float lightWidth){
+  return lightWidth /(2.0 * frame . lightParams . y * frame . lightParams . x);
+}
+#line 44
+float shadowc_searchWidthUV(float lightWidth, float zr){
+  return shadowc_lightSizeUV(lightWidth)*(zr - frame . lightParams . y)/ zr;
+}
+#line 50
+float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb){
+  return shadowc_lightSizeUV(lightWidth)* frame . lightParams . y *(zr - zb)/(zb * zr);
+}
+#line 11 "templates/shade.comp"
+#line 1 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/defaults.glsl"
+#line 12 "lookup/shadowc_lookup.glsl"
+#line 1 "frame.glsl"
+#line 13 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/resources.glsl"
+#line 10
+layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
+#line 14
+layout(set = 0, binding = 5)uniform sampler2DArray shadowc_moments;
+#line 20
+layout(set = 0, binding = 6)uniform usampler2DArray shadowc_summedArea;
+#line 28
+layout(set = 0, binding = 7)uniform sampler2D shadowc_minMaxPyramid;
+#line 14 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/kernel.glsl"
+#line 8
+struct ShadowcReceiver {
+  vec2 uv;
+  vec2 texel;
+  float d;
+  float zr;
+  vec3 worldPos;
+  float lightWidth;
+};
+
+float shadowc_lightWidth(){
+#line 21
+  return max(frame . lightParams . w, 0.0);
+
+}
+
+ivec2 shadowc_mapSize(){ return textureSize(shadowc_shadowDepth, 0);}
+
+float shadowc_depthAt(ivec2 t){
+  return texelFetch(shadowc_shadowDepth, clamp(t, ivec2(0), shadowc_mapSize()- 1), 0). r;
+}
+#line 33
+float shadowc_clampTexels(float w){ return(w >= 1.0)? min(w, 64.0): 1.0;}
+#line 37
+ivec4 shadowc_kernelRect(vec2 c, float w){
+  int n = int(shadowc_clampTexels(w)+ 0.5);
+  ivec2 lo = ivec2(floor(c - 0.5 * float(n)+ 0.5));
+  ivec2 hi = lo + ivec2(n - 1);
+  ivec2 last = shadowc_mapSize()- 1;
+  return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
+}
+#line 46
+float shadowc_searchTexels(ShadowcReceiver r){
+  return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
+}
+#line 52
+float shadowc_penumbraTexels(ShadowcReceiver r, float zBlocker){
+  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), frame . lightParams . y);
+  return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
+}
+#line 58
+float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
+#line 15 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/bias.glsl"
+#line 12
+vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
+  vec3 p = worldPos;
+#line 19
+  vec3 pl =(frame . lightView * vec4(p, 1.0)). xyz;
+  return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
+}
+
+float shadowc_bias(vec3 worldPos, vec3 worldNormal){
+#line 32
+  return 0.001;
+
+}
+#line 16 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/minmax.glsl"
+#line 13
+vec2 shadowc_minMaxOfRect(ivec4 rect){
+  int w = max(rect . z - rect . x, rect . w - rect . y)+ 1;
+  int level = w > 1 ? findMSB(w - 1)+ 1 : 0;
+  level = min(level, textureQueryLevels(shadowc_minMaxPyramid)- 1);
+  ivec2 last = max(textureSize(shadowc_minMaxPyramid, level)- 1, ivec2(0));
+  ivec2 lo = clamp(rect . xy >> level, ivec2(0), last);
+  ivec2 hi = clamp(rect . zw >> level, ivec2(0), last);
+  vec2 a = texelFetch(shadowc_minMaxPyramid, lo, level). rg;
+  vec2 b = texelFetch(shadowc_minMaxPyramid, ivec2(hi . x, lo . y), level). rg;
+  vec2 c = texelFetch(shadowc_minMaxPyramid, ivec2(lo . x, hi . y), level). rg;
+  vec2 e = texelFetch(shadowc_minMaxPyramid, hi, level). rg;
+  return vec2(min(min(a . x, b . x), min(c . x, e . x)), max(max(a . y, b . y), max(c . y, e . y)));
+}
+#line 28
+float shadowc_earlyOut(ivec4 rect, float d){
+  vec2 mm = shadowc_minMaxOfRect(rect);
+  if(mm . x >= d)return 1.0;
+  if(mm . y < d)return 0.0;
+  return - 1.0;
+}
+#line 27 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/chebyshev.glsl"
+#line 14
+float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance){
+  if(t <= mean)return 1.0;
+  float variance = max(meanSq - mean * mean, minVariance);
+  float dt = t - mean;
+  float denom = variance + dt * dt;
+  return denom > 0.0 ? shadowc_unit(variance / denom): 0.0;
+}
+
+float shadowc_reduceBleeding(float p){
+#line 26
+  return p;
+
+}
+#line 30 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/sat.glsl"
+#line 18
+uvec4 shadowc_summedCorner(int x, int y, int layer){
+  if(x < 0 || y < 0)return uvec4(0u);
+  return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
+}
+#line 30
+vec4 shadowc_summedMean(ivec4 rect, int layer){
+  float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
+  area = max(area, 1.0);
+
+  uvec4 sum = shadowc_summedCorner(rect . z, rect . w, layer)- shadowc_summedCorner(rect . x - 1, rect . w, layer)-
+              shadowc_summedCorner(rect . z, rect . y - 1, layer)+ shadowc_summedCorner(rect . x - 1, rect . y - 1, layer);
+  return vec4(sum)/(65536.0 * area);
+#line 46
+}
+#line 39 "lookup/shadowc_lookup.glsl"
+
+#line 1 "lookup/layered.glsl"
+#line 14
+float shadowc_split(int i){
+#line 22
+  return i == 0 ? 0.0 : 1.0;
+
+}
+
+vec2 shadowc_layerRange(int i){
+#line 30
+  return vec2(0.0, 1.0);
+
+}
+#line 35
+float shadowc_layerDepth(float d, int i){
+#line 40
+  return d;
+
+}
+#line 45
+float shadowc_layerMinVariance(int i){
+#line 51
+  return 1e-05;
+
+}
+#line 56
+int shadowc_layerOf(float d){
+  int j = 0;
+  for(int i = 1;i < 1;++ i)
+    if(d >= shadowc_split(i))j = i;
+  return j;
+}
+#line 41 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/moments_filter.glsl"
+#line 14
+vec4 shadowc_rectMoments(ivec4 rect, int layer){
+
+  return shadowc_summedMean(rect, layer);
+#line 22
+}
+#line 27
+vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
+
+  return shadowc_summedMean(rect, layer);
+#line 33
+}
+#line 36
+float shadowc_estimate(vec4 m, float d, float minVariance){
+
+  return shadowc_reduceBleeding(shadowc_chebyshev(m . x, m . y, d, minVariance));
+#line 46
+}
+
+float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
+  return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
+                          shadowc_layerMinVariance(layer));
+}
+#line 54
+float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
+  int j = shadowc_layerOf(d);
+  float v = shadowc_layerVisibility(uv, rect, w, d, j);
+#line 68
+  return v;
+}
+#line 73
+float shadowc_momentsTechnique(ShadowcReceiver r){
+#line 80
+  float w = shadowc_searchTexels(r);
+#line 85
+  return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
+}
+#line 42 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/vssm.glsl"
+#line 29
+ivec4 shadowc_vRoot;
+float shadowc_vD;
+float shadowc_vMinVariance;
+float shadowc_aEx;
+float shadowc_aEx2;
+float shadowc_aVsmArea;
+float shadowc_aLitArea;
+float shadowc_aPcfArea;
+float shadowc_aPcfOcc;
+float shadowc_aPcfDepth;
+
+void shadowc_vssmBegin(ivec4 root, float d){
+  shadowc_vRoot = root;
+  shadowc_vD = d;
+  shadowc_vMinVariance = 1e-05;
+  shadowc_aEx = 0.0;
+  shadowc_aEx2 = 0.0;
+  shadowc_aVsmArea = 0.0;
+  shadowc_aLitArea = 0.0;
+  shadowc_aPcfArea = 0.0;
+  shadowc_aPcfOcc = 0.0;
+  shadowc_aPcfDepth = 0.0;
+}
+#line 54
+ivec4 shadowc_subRect(ivec3 node){
+  ivec2 size = shadowc_vRoot . zw - shadowc_vRoot . xy + 1;
+  ivec2 lo = shadowc_vRoot . xy +(node . xy * size)/ node . z;
+  ivec2 hi = shadowc_vRoot . xy +((node . xy + 1)* size)/ node . z - 1;
+  return ivec4(lo, hi);
+}
+#line 62
+int shadowc_qtClassify(ivec3 node){
+  ivec4 rect = shadowc_subRect(node);
+  if(rect . z < rect . x || rect . w < rect . y)return 0;
+  float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
+  vec4 m = shadowc_rectMoments(rect, 0);
+  float variance = m . y - m . x * m . x;
+  if(m . x >= shadowc_vD && variance < 0.0001){
+    shadowc_aLitArea += area;
+    return 0;
+  }
+  if(m . x < shadowc_vD){
+    shadowc_aEx += m . x * area;
+    shadowc_aEx2 += m . y * area;
+    shadowc_aVsmArea += area;
+    return 0;
+  }
+  return 1;
+}
+#line 82
+void shadowc_qtResolveLeaf(ivec3 node){
+  ivec4 rect = shadowc_subRect(node);
+  if(rect . z < rect . x || rect . w < rect . y)return;
+  float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
+#line 105
+  shadowc_aLitArea += area;
+
+}
+#line 110
+bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassify(node)== 1;}
+void shadowc_qtLeaf(ivec3 node){
+  if(shadowc_qtClassify(node)== 1)shadowc_qtResolveLeaf(node);
+}
+#line 116
+void shadowc_uniformWalk(int den){
+  for(int j = 0;j < den;++ j)
+    for(int i = 0;i < den;++ i)shadowc_qtLeaf(ivec3(i, j, den));
+}
+#line 125
+void shadowc_qtWalk(int height){
+  int node = 0;
+  for(int step = 0;step < 85 && node >= 0;++ step){
+    ivec3 n = shadowc_qtNode[node];
+    if(shadowc_qtClassify(n)== 1){
+      if(n . z <(1 << height)&& shadowc_qtChild[node]>= 0){
+        node = shadowc_qtChild[node];
+        continue;
+      }
+      shadowc_qtResolveLeaf(n);
+    }
+    node = shadowc_qtNext[node];
+  }
+}
+#line 142
+float shadowc_vssmBlocker(ivec4 searchRect, float d){
+  shadowc_vssmBegin(searchRect, d);
+#line 151
+  shadowc_uniformWalk(5);
+#line 156
+  float a1 = 0.0;
+  float z1 = 0.0;
+  if(shadowc_aVsmArea > 0.0){
+    float mean = shadowc_aEx / shadowc_aVsmArea;
+    float meanSq = shadowc_aEx2 / shadowc_aVsmArea;
+    float p = shadowc_chebyshev(mean, meanSq, d, shadowc_vMinVariance);
+    if(1.0 - p > 1e-4){
+      z1 = clamp((mean - p * d)/(1.0 - p), 0.0, d);
+      a1 =(1.0 - p)* shadowc_aVsmArea;
+    }
+  }
+
+  float a = a1 + shadowc_aPcfOcc;
+  if(!(a > 1e-6))return - 1.0;
+  return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
+}
+#line 174
+float shadowc_vssmVisibility(ivec4 rect, float d){
+  shadowc_vssmBegin(rect, d);
+#line 180
+  shadowc_qtWalk(3);
+#line 187
+  float l = 1.0;
+  if(shadowc_aVsmArea > 0.0)
+    l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
+                                                 shadowc_vMinVariance));
+  float l1 = shadowc_aPcfArea > 0.0 ? 1.0 - shadowc_aPcfOcc / shadowc_aPcfArea : 1.0;
+  float total = shadowc_aVsmArea + shadowc_aLitArea + shadowc_aPcfArea;
+  if(!(total > 0.0))return 1.0;
+  return shadowc_unit((l * shadowc_aVsmArea + shadowc_aLitArea + l1 * shadowc_aPcfArea)/ total);
+}
+
+float shadowc_vssm(ShadowcReceiver r){
+  float zb = shadowc_vssmBlocker(shadowc_kernelRect(r . texel, shadowc_searchTexels(r)), r . d);
+  if(zb < 0.0)return 1.0;
+
+  float w = shadowc_penumbraTexels(r, zb);
+#line 210
+  return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
+}
+#line 45 "lookup/shadowc_lookup.glsl"
+#line 50
+bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
+  vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
+  r . worldPos = worldPos;
+  r . lightWidth = shadowc_lightWidth();
+  if(p . w == 0.0)return false;
+  vec4 ls = shadowc_lightSpace(p . xyz);
+  r . uv = ls . xy;
+  r . texel = ls . xy * vec2(shadowc_mapSize());
+  r . d = ls . z - shadowc_bias(worldPos, worldNormal);
+  r . zr = max(ls . w, frame . lightParams . y);
+
+  return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
+}
+#line 67
+ivec4 shadowc_influenceRect(ShadowcReceiver r){
+
+  ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
+#line 73
+  ivec2 last = shadowc_mapSize()- 1;
+  return ivec4(max(rect . xy - 1, ivec2(0)), min(rect . zw + 1, last));
+}
+#line 78
+float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
+  ShadowcReceiver r;
+  if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
+#line 83
+  float early = shadowc_earlyOut(shadowc_influenceRect(r), r . d);
+  if(early >= 0.0)return early;
+#line 87
+  float v = shadowc_vssm(r);
+#line 99
+  return shadowc_unit(v);
+}
+#line 12 "templates/shade.comp"
+
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1)in;
+
+layout(set = 0, binding = 1, rgba32f)readonly uniform image2D gbuffer_position;
+layout(set = 0, binding = 2, rgba32f)readonly uniform image2D gbuffer_normal;
+layout(set = 0, binding = 3, r32f)writeonly uniform image2D visibility;
+
+void main(){
+  ivec2 pixel = ivec2(gl_GlobalInvocationID . xy);
+  ivec2 size = imageSize(visibility);
+  if(any(greaterThanEqual(pixel, size)))return;
+  vec4 position = imageLoad(gbuffer_position, pixel);
+  float v = 1.0;
+  if(position . w != 0.0){
+    vec3 normal = imageLoad(gbuffer_normal, pixel). xyz;
+    v = shadowc_visibility(position . xyz, normal);
+  }
+#line 31
+  v =(v >= 0.0)? min(v, 1.0): 0.0;
+  imageStore(visibility, pixel, vec4(v, 0.0, 0.0, 0.0));
+}

@@ -1,0 +1,44 @@
+// Golden files of the emitted GLSL (glslang's Test/baseResults habit): a change to emitted
+// code is a reviewed diff. Update after review with SHADOWC_UPDATE_GOLDEN=1. Goldens live in
+// tests/emit/golden/<filter>/<stem>.glsl.
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "emit/emit_support.h"
+#include "plan/test_specs.h"
+
+namespace shadowc {
+namespace {
+
+void checkGoldens(const FilterSpec& spec) {
+  const FilterEmitResult r = emitFilter(spec);
+  ASSERT_TRUE(r.ok) << r.log;
+  int compared = 0;
+  for (const EmittedFile& f : r.files) {
+    if (!f.name.ends_with(".glsl") || f.name == lookupFileName(spec.name)) continue;  // lookup == shade's code
+    const auto golden = test::sourceDir() / "tests" / "emit" / "golden" / spec.name / f.name;
+    EXPECT_EQ(test::compareGolden(golden, f.bytes), "");
+    ++compared;
+  }
+  EXPECT_GE(compared, 1);
+}
+
+TEST(EmitGolden, VssmAdaptiveSample) { checkGoldens(test::loadSample("vssm_adaptive")); }
+TEST(EmitGolden, PcfDepthOnly) { checkGoldens(test::pcfSpec()); }
+TEST(EmitGolden, VssmInt32WithMinMax) { checkGoldens(test::vssmInt32Spec()); }
+TEST(EmitGolden, LayeredEvsm4Fp16) { checkGoldens(test::layeredEvsmSpec()); }
+TEST(EmitGolden, PowerCdfBlurMips) { checkGoldens(test::blurMipSpec()); }
+
+// The sibling that proves the comparison can fail.
+TEST(EmitGolden, AChangedByteIsReported) {
+  const auto dir = test::freshTempDir("golden-sibling");
+  const auto file = dir / "x.glsl";
+  { std::ofstream(file) << "void main() {}\n"; }
+  if (const char* u = std::getenv("SHADOWC_UPDATE_GOLDEN"); u && std::string(u) == "1") GTEST_SKIP() << "update mode";
+  EXPECT_NE(test::compareGolden(file, "void main() { }\n"), "");
+  EXPECT_EQ(test::compareGolden(file, "void main() {}\n"), "");
+}
+
+}  // namespace
+}  // namespace shadowc
