@@ -1,0 +1,244 @@
+#include "runtime/reference/embree_reference.h"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <numbers>
+#include <stdexcept>
+
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
+#define XXH_INLINE_ALL
+#include <xxhash.h>
+
+#include "runtime/images/atomic_file.h"
+#include "runtime/reference/embree_scene.h"
+#include "runtime/scene/frame_setup.h"
+
+namespace shadowc::rt {
+namespace {
+
+constexpr char kCacheMagic[8] = {'S', 'H', 'C', 'R', 'E', 'F', '0', '1'};
+constexpr uint64_t kJitterSeed = 0x5ad0c5eedULL;
+
+// splitmix64: a fixed, platform-independent jitter per (pixel, sample): the result does not
+// depend on thread scheduling.
+uint64_t mix(uint64_t x) {
+  x += 0x9E3779B97F4A7C15ULL;
+  x = (x ^ (x >> 30)) * 0xBF58476D1CE4E5B9ULL;
+  x = (x ^ (x >> 27)) * 0x94D049BB133111EBULL;
+  return x ^ (x >> 31);
+}
+float unitFloat(uint64_t bits) { return static_cast<float>(bits >> 40) * (1.0f / 16777216.0f); }  // [0, 1)
+
+// Ray origin offset along the normal, relative to the point's own magnitude (fp32 G-buffer and
+// Embree round-off grow with |p|) and to its distance from the light, so it works from the
+// depth_range scene's 1e-3 to its 1e4.
+float normalOffset(const glm::vec3& p, const glm::vec3& lightPos) {
+  const float mag = std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return 1e-4f * std::max({mag, 0.01f * glm::length(p - lightPos), 1e-20f});
+}
+
+class PixelTracer {
+ public:
+  PixelTracer(const EmbreeScene& embree, int samplesPerAxis)
+      : embree_(embree), light_(embree.scene().light), n_(light_.width > 0 ? samplesPerAxis : 1) {}
+
+  int raysPerPixel() const { return n_ * n_; }
+
+  float visibility(const glm::vec3& p, const glm::vec3& normal, uint64_t pixelIndex) const {
+    const glm::vec3 org = p + normalOffset(p, light_.position) * normal;
+    int visible = 0;
+    for (int j = 0; j < n_; ++j) {
+      for (int i = 0; i < n_; ++i) {
+        const uint64_t h = mix(mix(pixelIndex ^ kJitterSeed) + static_cast<uint64_t>(j * n_ + i));
+        const glm::vec3 target = lightSamplePoint(light_, i, j, n_, unitFloat(h), unitFloat(mix(h)));
+        // tfar just short of the light: the light itself is not geometry, but a surface lying
+        // exactly in the light's plane must not count.
+        if (!embree_.occluded(org, target - org, 1.0f - 1e-5f)) ++visible;
+      }
+    }
+    return static_cast<float>(visible) / static_cast<float>(n_ * n_);
+  }
+
+ private:
+  const EmbreeScene& embree_;
+  const AreaLight& light_;
+  int n_;
+};
+
+std::string cacheKey(const Scene& scene, const std::vector<float>& pos, const std::vector<float>& nrm, uint32_t w,
+                     uint32_t h, int samples) {
+  XXH3_state_t* s = XXH3_createState();
+  XXH3_128bits_reset(s);
+  const std::string sceneHash = scene.contentHash();
+  const char tag[] = "shadowc-reference-v1";
+  XXH3_128bits_update(s, tag, sizeof tag);
+  XXH3_128bits_update(s, sceneHash.data(), sceneHash.size());
+  const uint32_t header[3] = {w, h, static_cast<uint32_t>(samples)};
+  XXH3_128bits_update(s, header, sizeof header);
+  XXH3_128bits_update(s, pos.data(), pos.size() * sizeof(float));
+  XXH3_128bits_update(s, nrm.data(), nrm.size() * sizeof(float));
+  const XXH128_hash_t d = XXH3_128bits_digest(s);
+  XXH3_freeState(s);
+  return fmt::format("{:016x}{:016x}", d.high64, d.low64);
+}
+
+// File: magic[8], u32 width, height, samples, key[32 chars], float data[w*h], u64 XXH3 of data.
+std::string encodeCache(const ReferenceResult& r, const std::string& key) {
+  std::string out(kCacheMagic, sizeof kCacheMagic);
+  const uint32_t header[3] = {r.width, r.height, static_cast<uint32_t>(r.samplesPerAxis)};
+  out.append(reinterpret_cast<const char*>(header), sizeof header);
+  out.append(key);
+  const size_t bytes = r.visibility.size() * sizeof(float);
+  out.append(reinterpret_cast<const char*>(r.visibility.data()), bytes);
+  const uint64_t check = XXH3_64bits(r.visibility.data(), bytes);
+  out.append(reinterpret_cast<const char*>(&check), sizeof check);
+  return out;
+}
+
+bool decodeCache(const std::filesystem::path& file, const std::string& key, ReferenceResult& r) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) return false;
+  const std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const size_t pixels = size_t(r.width) * r.height;
+  const size_t expected = sizeof kCacheMagic + 12 + key.size() + pixels * sizeof(float) + 8;
+  if (data.size() != expected || std::memcmp(data.data(), kCacheMagic, sizeof kCacheMagic) != 0) return false;
+  uint32_t header[3];
+  std::memcpy(header, data.data() + sizeof kCacheMagic, sizeof header);
+  if (header[0] != r.width || header[1] != r.height || header[2] != static_cast<uint32_t>(r.samplesPerAxis)) {
+    return false;
+  }
+  size_t at = sizeof kCacheMagic + 12;
+  if (data.compare(at, key.size(), key) != 0) return false;
+  at += key.size();
+  std::vector<float> vis(pixels);
+  std::memcpy(vis.data(), data.data() + at, pixels * sizeof(float));
+  uint64_t check;
+  std::memcpy(&check, data.data() + at + pixels * sizeof(float), sizeof check);
+  if (check != XXH3_64bits(vis.data(), pixels * sizeof(float))) return false;
+  r.visibility = std::move(vis);
+  return true;
+}
+
+}  // namespace
+
+glm::vec3 lightSamplePoint(const AreaLight& light, int i, int j, int n, float ju, float jv) {
+  const float u = (static_cast<float>(i) + ju) / static_cast<float>(n);  // [0, 1)
+  const float v = (static_cast<float>(j) + jv) / static_cast<float>(n);
+  const LightBasis b = lightBasis(light);
+  float x, y;
+  if (light.shape == LightShape::Rect) {
+    x = (u - 0.5f) * light.width;
+    y = (v - 0.5f) * light.width;
+  } else {
+    // Concentric square -> disk mapping: keeps the strata compact and equal in area.
+    const float a = 2.0f * u - 1.0f, c = 2.0f * v - 1.0f;
+    float r = 0, phi = 0;
+    constexpr float kQuarterPi = std::numbers::pi_v<float> / 4.0f;
+    if (a == 0 && c == 0) {
+      r = 0;
+    } else if (std::abs(a) > std::abs(c)) {
+      r = a;
+      phi = kQuarterPi * (c / a);
+    } else {
+      r = c;
+      phi = 2.0f * kQuarterPi - kQuarterPi * (a / c);
+    }
+    r *= 0.5f * light.width;
+    x = r * std::cos(phi);
+    y = r * std::sin(phi);
+  }
+  return light.position + x * b.x + y * b.y;
+}
+
+std::filesystem::path defaultReferenceCacheDir() {
+  if (const char* d = std::getenv("SHADOWC_CACHE_DIR"); d != nullptr && *d != '\0') return d;
+  if (const char* d = std::getenv("XDG_CACHE_HOME"); d != nullptr && *d != '\0') {
+    return std::filesystem::path(d) / "shadowc";
+  }
+  if (const char* d = std::getenv("HOME"); d != nullptr && *d != '\0') {
+    return std::filesystem::path(d) / ".cache" / "shadowc";
+  }
+  return std::filesystem::temp_directory_path() / "shadowc-cache";
+}
+
+ReferenceResult traceReference(const Scene& scene, const std::vector<float>& positionsRGBA,
+                               const std::vector<float>& normalsRGBA, uint32_t width, uint32_t height,
+                               int samplesPerAxis, const std::filesystem::path& cacheDir, ProgressFn progress,
+                               bool useCache) {
+  const size_t pixels = size_t(width) * height;
+  if (positionsRGBA.size() != pixels * 4 || normalsRGBA.size() != pixels * 4) {
+    throw std::invalid_argument(fmt::format("traceReference: G-buffer holds {} / {} floats, expected {} ({}x{} RGBA)",
+                                            positionsRGBA.size(), normalsRGBA.size(), pixels * 4, width, height));
+  }
+  if (samplesPerAxis < 1 || samplesPerAxis > 1024) {
+    throw std::invalid_argument(fmt::format("traceReference: samplesPerAxis must be in [1, 1024], got {}", samplesPerAxis));
+  }
+  ReferenceResult r;
+  r.width = width;
+  r.height = height;
+  r.samplesPerAxis = samplesPerAxis;
+  const auto start = std::chrono::steady_clock::now();
+  std::string key;
+  if (useCache) {
+    key = cacheKey(scene, positionsRGBA, normalsRGBA, width, height, samplesPerAxis);
+    r.cacheFile = (cacheDir.empty() ? defaultReferenceCacheDir() : cacheDir) / ("reference-" + key + ".bin");
+    if (decodeCache(r.cacheFile, key, r)) {
+      r.fromCache = true;
+      r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      if (progress) progress({pixels, pixels, 0, r.seconds, 0});
+      return r;
+    }
+  }
+
+  const EmbreeScene embree(scene);
+  const PixelTracer tracer(embree, samplesPerAxis);
+  r.visibility.assign(pixels, 1.0f);
+  // Bands of rows, each traced on all cores; progress is reported between bands from this thread.
+  const uint32_t band = std::max<uint32_t>(1, height / 16);
+  uint64_t tracedPixels = 0;
+  for (uint32_t y0 = 0; y0 < height; y0 += band) {
+    const uint32_t y1 = std::min(height, y0 + band);
+    std::atomic<uint64_t> bandHits{0};
+    tbb::parallel_for(y0, y1, [&](uint32_t y) {
+      uint64_t hits = 0;
+      for (uint32_t x = 0; x < width; ++x) {
+        const size_t i = size_t(y) * width + x;
+        const float* p = &positionsRGBA[i * 4];
+        if (p[3] == 0.0f) continue;  // background: fully lit by convention
+        const float* n = &normalsRGBA[i * 4];
+        r.visibility[i] = tracer.visibility({p[0], p[1], p[2]}, {n[0], n[1], n[2]}, i);
+        ++hits;
+      }
+      bandHits += hits;
+    });
+    tracedPixels += bandHits.load();
+    r.rays = tracedPixels * static_cast<uint64_t>(tracer.raysPerPixel());
+    r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    r.raysPerSecond = r.seconds > 0 ? static_cast<double>(r.rays) / r.seconds : 0;
+    if (progress) progress({size_t(y1) * width, pixels, r.rays, r.seconds, r.raysPerSecond});
+  }
+  if (useCache) {
+    try {
+      writeFileAtomically(r.cacheFile, encodeCache(r, key));
+    } catch (const std::exception& e) {
+      r.cacheWarning = e.what();
+      r.cacheFile.clear();
+    }
+  }
+  return r;
+}
+
+float referenceVisibilityAt(const Scene& scene, const glm::vec3& position, const glm::vec3& normal,
+                            int samplesPerAxis, uint64_t pixelIndex) {
+  const EmbreeScene embree(scene);
+  return PixelTracer(embree, samplesPerAxis).visibility(position, normal, pixelIndex);
+}
+
+}  // namespace shadowc::rt
