@@ -82,6 +82,8 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
 
   check(layers >= 1, "layers must be >= 1");
   check(!vssm || s.moments.warp == Warp::Linear, "the VSSM blocker estimate (eq. 4) needs the linear warp");
+  check(moments || s.blocker.kind != BlockerKind::Moments, "the moments blocker estimate needs a moments representation");
+  check(!vssm || layers == 1, "the VSSM path works on a single (unlayered) moments map");
   check(!(moments && s.moments.warp == Warp::PowerCdf && s.storage.sat != SatKind::None),
         "power_cdf stores min/max, which a summed-area table cannot sum");
 
@@ -105,7 +107,9 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
   // ---- kernel -----------------------------------------------------------------------------
   defInt("SHADOWC_KERNEL_PENUMBRA", s.kernel.size == KernelSize::Penumbra ? 1 : 0);
   defFloat("SHADOWC_KERNEL_FIXED_TEXELS", std::max(1, s.kernel.fixedTexels));
-  defFloat("SHADOWC_KERNEL_MAX_TEXELS", std::max(1.0, s.kernel.maxTexels));
+  // An int32 SAT box sum must fit in 32 bits: 255^2 texels * 65536 < 2^32 (sat.glsl, FACTS.md).
+  const bool int32Sat = moments && s.storage.sat == SatKind::Int32;
+  defFloat("SHADOWC_KERNEL_MAX_TEXELS", std::clamp(s.kernel.maxTexels, 1.0, int32Sat ? 255.0 : 1e6));
   defInt("SHADOWC_KERNEL_SUBDIVISION", subdivisionValue(s.kernel.subdivision));
   defInt("SHADOWC_KERNEL_N", std::max(1, s.kernel.uniformN));
   defInt("SHADOWC_KERNEL_HEIGHT", s.kernel.quadtreeHeight);
@@ -119,6 +123,7 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
   defInt("SHADOWC_ROTATION_STABLE", s.sampling.rotation == Rotation::Stable ? 1 : 0);
 
   // ---- blocker ----------------------------------------------------------------------------
+  defInt("SHADOWC_BLOCKER_KIND", static_cast<int>(s.blocker.kind));
   defInt("SHADOWC_BLOCKER_TAPS", std::max(1, s.blocker.taps));
   defInt("SHADOWC_BLOCKER_PATTERN", static_cast<int>(s.blocker.pattern));
   defInt("SHADOWC_BLOCKER_GRID_N", std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(1, s.blocker.taps))))));
@@ -136,8 +141,10 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
     defFloat("SHADOWC_MIN_VARIANCE", std::max(0.0, s.moments.minVariance));
     // linstep(a, 1, p) divides by 1 - a (vsm-tutorial, lauritzen2008): keep a < 1.
     defFloat("SHADOWC_BLEEDING", std::clamp(s.moments.bleedingReduction, 0.0, 0.999));
+    defInt("SHADOWC_BLEEDING_ON", s.moments.bleedingReduction > 0.0 ? 1 : 0);
     defInt("SHADOWC_LAYERS", layers);
     defFloat("SHADOWC_OVERLAP", std::max(0.0, s.moments.overlap));
+    defInt("SHADOWC_LAYER_BLEND", layers > 1 && s.moments.overlap > 0.0 ? 1 : 0);
     if (layers > 1 && !splitsTexture) {
       std::vector<double> splits = s.moments.splits;
       if (splits.size() != static_cast<size_t>(layers + 1)) {

@@ -1,0 +1,36 @@
+// bias.glsl — receiver depth bias (self-shadowing "acne"). Three policies:
+//  constant:      d - b
+//  slope-scaled:  d - max(a * (1 - N.L), b)      (pcss-blog.txt: bias grows as the surface
+//                                                  turns away from the light)
+//  normal offset: move the receiver along N by SHADOWC_NORMAL_OFFSET shadow-map texels (world
+//                 size of a texel at the receiver: 2 z tanHalfFov / mapSize), then d - b.
+// The receiver test everywhere is `z < d_biased` (briefing convention).
+#ifndef SHADOWC_BIAS_GLSL
+#define SHADOWC_BIAS_GLSL
+
+// Light-space position of the (possibly offset) receiver; .w = 0 when it lies behind the light.
+vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal) {
+  vec3 p = worldPos;
+#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_NORMAL_OFFSET_KIND
+  float z0 = (frame.lightView * vec4(worldPos, 1.0)).z;
+  float texelWorld = 2.0 * max(z0, 0.0) * frame.lightParams.x / float(shadowc_mapSize().x);
+  p += worldNormal * (SHADOWC_NORMAL_OFFSET * texelWorld);
+#endif
+  vec3 pl = (frame.lightView * vec4(p, 1.0)).xyz;
+  return vec4(p, pl.z > 0.0 ? 1.0 : 0.0);
+}
+
+float shadowc_bias(vec3 worldPos, vec3 worldNormal) {
+#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_SLOPE_SCALED_KIND
+  vec3 pl = (frame.lightView * vec4(worldPos, 1.0)).xyz;
+  vec3 nl = mat3(frame.lightView) * worldNormal;
+  // N.L with L towards the light centre; a zero-length vector gives N.L = 0 (max bias), not NaN.
+  float len = length(nl) * length(pl);
+  float ndotl = len > 0.0 ? clamp(dot(nl, -pl) / len, 0.0, 1.0) : 0.0;
+  return max(SHADOWC_BIAS_SLOPE * (1.0 - ndotl), SHADOWC_BIAS_CONSTANT);
+#else
+  return SHADOWC_BIAS_CONSTANT;
+#endif
+}
+
+#endif

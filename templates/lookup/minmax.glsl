@@ -1,0 +1,35 @@
+// minmax.glsl — min-max hierarchical shadow map (vssm-yang2010 sec. 6.1, Algorithm 1 L8-L10):
+// a mip pyramid whose level L texel (i, j) holds (min, max) of the depths of level-0 texels
+// [i 2^L, (i+1) 2^L) x [j 2^L, (j+1) 2^L). For a kernel rectangle we pick the smallest level L
+// with 2^L >= the kernel width, where the rectangle covers at most 2 x 2 texels, and fetch those.
+// The result bounds the kernel's depths conservatively (it may include a few texels around the
+// kernel), so the early out is exact whenever it fires:
+//   min >= d  -> no texel occludes            -> lit (1)
+//   max <  d  -> every texel occludes          -> umbra (0)   (d is the biased receiver depth)
+// No division: no NaN possible.
+#ifndef SHADOWC_MINMAX_GLSL
+#define SHADOWC_MINMAX_GLSL
+
+vec2 shadowc_minMaxOfRect(ivec4 rect) {
+  int w = max(rect.z - rect.x, rect.w - rect.y) + 1;
+  int level = w > 1 ? findMSB(w - 1) + 1 : 0;  // 2^level >= w
+  level = min(level, textureQueryLevels(shadowc_minMaxPyramid) - 1);
+  ivec2 last = max(textureSize(shadowc_minMaxPyramid, level) - 1, ivec2(0));
+  ivec2 lo = clamp(rect.xy >> level, ivec2(0), last);
+  ivec2 hi = clamp(rect.zw >> level, ivec2(0), last);
+  vec2 a = texelFetch(shadowc_minMaxPyramid, lo, level).rg;
+  vec2 b = texelFetch(shadowc_minMaxPyramid, ivec2(hi.x, lo.y), level).rg;
+  vec2 c = texelFetch(shadowc_minMaxPyramid, ivec2(lo.x, hi.y), level).rg;
+  vec2 e = texelFetch(shadowc_minMaxPyramid, hi, level).rg;
+  return vec2(min(min(a.x, b.x), min(c.x, e.x)), max(max(a.y, b.y), max(c.y, e.y)));
+}
+
+// 1 = lit, 0 = umbra, -1 = undecided (penumbra candidate: run the filter).
+float shadowc_earlyOut(ivec4 rect, float d) {
+  vec2 mm = shadowc_minMaxOfRect(rect);
+  if (mm.x >= d) return 1.0;
+  if (mm.y < d) return 0.0;
+  return -1.0;
+}
+
+#endif

@@ -1,0 +1,51 @@
+// pcss.glsl — percentage-closer soft shadows (Fernando 2005; pcss-blog.txt):
+//  1. blocker search: average depth of the texels that occlude the receiver, over the search
+//     region (the light cone cut at the near plane, frame.glsl), with SHADOWC_BLOCKER_TAPS taps
+//     on a grid or a rotated Poisson disk;
+//  2. penumbra estimate: w = W (zr - zb) / zb scaled to the map (frame.glsl);
+//  3. PCF with that kernel (pcf.glsl).
+// Guards: no blocker found -> lit (no division by a zero count); zb is kept >= near in
+// shadowc_penumbraTexels so the width never divides by 0.
+#ifndef SHADOWC_PCSS_GLSL
+#define SHADOWC_PCSS_GLSL
+
+// Average occluder depth over a search region `w` texels wide, or -1 when nothing occludes.
+float shadowc_blockerSearch(ShadowcReceiver r, float w) {
+  float sum = 0.0;
+  float count = 0.0;
+#if SHADOWC_BLOCKER_PATTERN == 1
+#if !SHADOWC_HAS_POISSON_BLOCKER
+#error "Poisson blocker search needs the generated shadowc_poissonBlocker taps"
+#endif
+  vec2 rot = shadowc_rotation(r.worldPos);
+  for (int i = 0; i < SHADOWC_BLOCKER_TAPS; ++i) {
+    float z = shadowc_depthAt(ivec2(floor(r.texel + shadowc_rotate(shadowc_poissonBlocker[i], rot) * (0.5 * w))));
+    if (z < r.d) {
+      sum += z;
+      count += 1.0;
+    }
+  }
+#else
+  const int n = SHADOWC_BLOCKER_GRID_N;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      vec2 pos = r.texel + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
+      float z = shadowc_depthAt(ivec2(floor(pos)));
+      if (z < r.d) {
+        sum += z;
+        count += 1.0;
+      }
+    }
+#endif
+  return count > 0.0 ? sum / count : -1.0;
+}
+
+#if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS
+float shadowc_pcss(ShadowcReceiver r) {
+  float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r));
+  if (zb < 0.0) return 1.0;
+  return shadowc_pcf(r, shadowc_penumbraTexels(r, zb));
+}
+#endif
+
+#endif

@@ -1,0 +1,36 @@
+// resources.glsl — the shadow-map resources of the lookup (bindings 4..8 of the shade pass,
+// briefing table). Only what the filter uses is declared, so an engine that #includes the
+// emitted <filter>_lookup.glsl binds exactly the images listed in the manifest. The set is
+// SHADOWC_SET (default 0) and every binding can be moved with SHADOWC_BINDING_*.
+#ifndef SHADOWC_RESOURCES_GLSL
+#define SHADOWC_RESOURCES_GLSL
+
+// Normalized linear depth d = (z - near) / (far - near), 1.0 where nothing was hit. Nearest,
+// read with texelFetch only.
+layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_DEPTH) uniform sampler2D shadowc_shadowDepth;
+
+#if SHADOWC_HAS_MOMENTS
+// Warped moments, one array layer per depth layer; linear filtering (+ mips when prefiltered).
+layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_MOMENTS) uniform sampler2DArray shadowc_moments;
+#endif
+
+#if SHADOWC_HAS_SAT
+// Summed-area table of the moments (inclusive corners, see sat.glsl), texelFetch only.
+#if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
+layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_SAT) uniform usampler2DArray shadowc_summedArea;
+#else
+layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_SAT) uniform sampler2DArray shadowc_summedArea;
+#endif
+#endif
+
+#if SHADOWC_HAS_MINMAX
+// Min-max depth pyramid (r = min, g = max), full mip chain, texelFetch per level.
+layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_MINMAX) uniform sampler2D shadowc_minMaxPyramid;
+#endif
+
+#if SHADOWC_HAS_SPLITS_TEXTURE
+// Lloyd-relaxed layer splits s_0..s_N in texels (i, 0) of an r32f image N+1 wide.
+layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_SPLITS) uniform sampler2D shadowc_splitsTexture;
+#endif
+
+#endif

@@ -1,0 +1,102 @@
+// shadowc_lookup.glsl — the visibility lookup of a shadowc filter:
+//   float shadowc_visibility(vec3 worldPos, vec3 worldNormal)   // 1 = fully lit, in [0, 1]
+// Specialized by the #defines of defaults.glsl (set by compiler/emit/lookup_specialization.cpp
+// at the `@shadowc:specialize` marker of the including shader). The emitter ships the
+// preprocessed text as <filter>_lookup.glsl so an engine can #include it into its own shader;
+// it needs frame.glsl (set 0, binding SHADOWC_FRAME_BINDING) and the resources of
+// resources.glsl (set SHADOWC_SET, bindings 4..8).
+#ifndef SHADOWC_LOOKUP_GLSL
+#define SHADOWC_LOOKUP_GLSL
+
+#include "lookup/defaults.glsl"
+#include "frame.glsl"
+#include "lookup/resources.glsl"
+#include "lookup/kernel.glsl"
+#include "lookup/bias.glsl"
+#if SHADOWC_HAS_POISSON_PCF || SHADOWC_HAS_POISSON_BLOCKER
+#include "lookup/rotation.glsl"
+#endif
+#if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCF || SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS || SHADOWC_CONTACT
+#include "lookup/pcf.glsl"
+#endif
+#if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS || SHADOWC_BLOCKER_KIND == SHADOWC_BLOCKER_SEARCH
+#include "lookup/pcss.glsl"
+#endif
+#if SHADOWC_HAS_MINMAX
+#include "lookup/minmax.glsl"
+#endif
+#if SHADOWC_HAS_MOMENTS
+#include "lookup/chebyshev.glsl"
+#if SHADOWC_WARP == SHADOWC_WARP_EXP
+#include "lookup/esm.glsl"
+#elif SHADOWC_WARP == SHADOWC_WARP_EVSM2 || SHADOWC_WARP == SHADOWC_WARP_EVSM4
+#include "lookup/evsm.glsl"
+#elif SHADOWC_WARP == SHADOWC_WARP_POWER_CDF
+#include "lookup/power_cdf.glsl"
+#endif
+#if SHADOWC_HAS_SAT
+#include "lookup/sat.glsl"
+#endif
+#include "lookup/layered.glsl"
+#include "lookup/moments_filter.glsl"
+#endif
+#if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM
+#include "lookup/vssm.glsl"
+#endif
+
+// The receiver for a world position, with the bias applied. Returns false when the point is
+// behind the light or outside the shadow map's frustum (then it is lit: nothing was rendered
+// that could shadow it).
+bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r) {
+  vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
+  r.worldPos = worldPos;
+  r.lightWidth = shadowc_lightWidth();
+  if (p.w == 0.0) return false;
+  vec4 ls = shadowc_lightSpace(p.xyz);
+  r.uv = ls.xy;
+  r.texel = ls.xy * vec2(shadowc_mapSize());
+  r.d = ls.z - shadowc_bias(worldPos, worldNormal);
+  r.zr = max(ls.w, frame.lightParams.y);
+  // Written so that NaN coordinates also count as outside.
+  return all(greaterThanEqual(ls.xy, vec2(0.0))) && all(lessThanEqual(ls.xy, vec2(1.0)));
+}
+
+#if SHADOWC_EARLY_OUT && SHADOWC_HAS_MINMAX
+// Texel rectangle whose texels can influence the result: the early out must cover all of it to
+// be exact (the widest kernel, grown by one texel for bilinear taps and rounding).
+ivec4 shadowc_influenceRect(ShadowcReceiver r) {
+#if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS || SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM || SHADOWC_KERNEL_PENUMBRA
+  ivec4 rect = shadowc_kernelRect(r.texel, shadowc_searchTexels(r));
+#else
+  ivec4 rect = shadowc_kernelRect(r.texel, SHADOWC_KERNEL_FIXED_TEXELS);
+#endif
+  ivec2 last = shadowc_mapSize() - 1;
+  return ivec4(max(rect.xy - 1, ivec2(0)), min(rect.zw + 1, last));
+}
+#endif
+
+float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
+  ShadowcReceiver r;
+  if (!shadowc_receiver(worldPos, worldNormal, r)) return 1.0;
+#if SHADOWC_EARLY_OUT && SHADOWC_HAS_MINMAX
+  // vssm-yang2010 sec. 6.1 / Algorithm 1 L8-L10.
+  float early = shadowc_earlyOut(shadowc_influenceRect(r), r.d);
+  if (early >= 0.0) return early;
+#endif
+#if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM
+  float v = shadowc_vssm(r);
+#elif SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_MOMENTS
+  float v = shadowc_momentsTechnique(r);
+#elif SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS
+  float v = shadowc_pcss(r);
+#else
+#if SHADOWC_KERNEL_PENUMBRA
+  float v = shadowc_pcf(r, shadowc_searchTexels(r));  // no blocker estimate: the widest penumbra
+#else
+  float v = shadowc_pcf(r, SHADOWC_KERNEL_FIXED_TEXELS);
+#endif
+#endif
+  return shadowc_unit(v);
+}
+
+#endif

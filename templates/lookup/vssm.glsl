@@ -1,0 +1,213 @@
+// vssm.glsl — variance soft shadow mapping (vssm-yang2010), Algorithm 1 L7-L20:
+//  L7      search region w_i: the light cone cut at the near plane (frame.glsl);
+//  L8-10   min-max early out (minmax.glsl, applied by shadowc_lookup.glsl);
+//  L11-15  average blocker depth by eq. 4 over the sub-kernels of w_i,
+//            z_occ = (z_avg - P t) / (1 - P),  z_unocc = t,  P = Chebyshev (eq. 1),
+//          with the paper's mixed scheme (sec. 6.3): uniform m x m subdivision for the blocker;
+//  L16     penumbra kernel w_p from z_occ (PCSS formula, frame.glsl);
+//  sec 6.4 contact path: |z_occ - d| < epsilon -> n x n bilinear PCF over w_p;
+//  L17-20  visibility over w_p by uniform n x n subdivision (sec. 5.2) or the adaptive quadtree
+//          of Algorithm 2 (sec. 5.3), table walk with Next/Child or fully unrolled.
+// Every sub-kernel is classified as in Algorithm 2 L9-L26:
+//   E(x) >= d and s^2 < Threshold  -> fully lit, LitArea += T                    (L9-L11)
+//   E(x) <  d                      -> normal: accumulate E(x) T, E(x^2) T, T    (L13-L17)
+//   otherwise ("non-planar")       -> descend; at a leaf: PCF with FALLBACK_N^2 depth samples
+//                                     (sec. 5.1 option 2), or lit when the fallback is off
+//                                     (option 1).
+// Normal sub-kernels are combined by eq. 5 (area-weighted moments) into one Chebyshev estimate;
+// the final visibility is (L VSMArea + LitArea + L1 PCFArea) / (VSMArea + LitArea + PCFArea).
+// Guards: eq. 4 is only used when 1 - P > 1e-4 (P -> 1 means no blocker mass, and the
+// non-planar case z_avg >= t never reaches it: Chebyshev returns P = 1 there); z_occ is clamped
+// to [0, d]; every average divides by an area or count tested > 0 first; no blocker -> lit.
+// Sub-kernel rectangles use integer arithmetic (ix * W / 2^level) so they partition the root
+// kernel exactly; a sub-kernel narrower than a texel is empty (area 0) and skipped.
+// State lives in private globals so that the generated unrolled traversal (plain functions with
+// builtin types, emitted before this file) can call back into it.
+#ifndef SHADOWC_VSSM_GLSL
+#define SHADOWC_VSSM_GLSL
+
+ivec4 shadowc_vRoot;     // root kernel rectangle (inclusive texels), clamped to the map
+float shadowc_vD;        // biased receiver depth
+float shadowc_vMinVariance;
+float shadowc_aEx;       // Algorithm 2 VSMEx
+float shadowc_aEx2;      // VSMEx2
+float shadowc_aVsmArea;  // VSMArea
+float shadowc_aLitArea;  // LitArea
+float shadowc_aPcfArea;  // PCFArea
+float shadowc_aPcfOcc;   // PCFBArea: area-weighted occluded fraction of the PCF leaves
+float shadowc_aPcfDepth; // area-weighted sum of the occluding PCF samples' depths (blocker)
+
+void shadowc_vssmBegin(ivec4 root, float d) {
+  shadowc_vRoot = root;
+  shadowc_vD = d;
+  shadowc_vMinVariance = SHADOWC_MIN_VARIANCE;
+  shadowc_aEx = 0.0;
+  shadowc_aEx2 = 0.0;
+  shadowc_aVsmArea = 0.0;
+  shadowc_aLitArea = 0.0;
+  shadowc_aPcfArea = 0.0;
+  shadowc_aPcfOcc = 0.0;
+  shadowc_aPcfDepth = 0.0;
+}
+
+// Sub-kernel (ix, iy) of a den x den partition of the root kernel.
+ivec4 shadowc_subRect(ivec3 node) {
+  ivec2 size = shadowc_vRoot.zw - shadowc_vRoot.xy + 1;
+  ivec2 lo = shadowc_vRoot.xy + (node.xy * size) / node.z;
+  ivec2 hi = shadowc_vRoot.xy + ((node.xy + 1) * size) / node.z - 1;
+  return ivec4(lo, hi);
+}
+
+// Algorithm 2 L6-L19 for one sub-kernel: 0 = accepted (lit or normal), 1 = non-planar.
+int shadowc_qtClassify(ivec3 node) {
+  ivec4 rect = shadowc_subRect(node);
+  if (rect.z < rect.x || rect.w < rect.y) return 0;
+  float area = float((rect.z - rect.x + 1) * (rect.w - rect.y + 1));
+  vec4 m = shadowc_rectMoments(rect, 0);
+  float variance = m.y - m.x * m.x;
+  if (m.x >= shadowc_vD && variance < SHADOWC_LIT_THRESHOLD) {
+    shadowc_aLitArea += area;
+    return 0;
+  }
+  if (m.x < shadowc_vD) {
+    shadowc_aEx += m.x * area;
+    shadowc_aEx2 += m.y * area;
+    shadowc_aVsmArea += area;
+    return 0;
+  }
+  return 1;
+}
+
+// A non-planar leaf (Algorithm 2 L22-L26).
+void shadowc_qtResolveLeaf(ivec3 node) {
+  ivec4 rect = shadowc_subRect(node);
+  if (rect.z < rect.x || rect.w < rect.y) return;
+  float area = float((rect.z - rect.x + 1) * (rect.w - rect.y + 1));
+#if SHADOWC_FALLBACK_PCF
+  const int n = SHADOWC_FALLBACK_N;
+  vec2 size = vec2(rect.zw - rect.xy + 1);
+  float occluded = 0.0;
+  float depthSum = 0.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      ivec2 t = rect.xy + ivec2(floor((vec2(i, j) + 0.5) * size / float(n)));
+      float z = shadowc_depthAt(t);
+      if (z < shadowc_vD) {
+        occluded += 1.0;
+        depthSum += z;
+      }
+    }
+  float scale = area / float(n * n);
+  shadowc_aPcfArea += area;
+  shadowc_aPcfOcc += occluded * scale;
+  shadowc_aPcfDepth += depthSum * scale;
+#else
+  shadowc_aLitArea += area;  // option 1 of sec. 5.1: a small non-planar sub-kernel is lit
+#endif
+}
+
+// Callbacks of the generated unrolled traversal (quadtree_tables.cpp).
+bool shadowc_qtVisit(ivec3 node) { return shadowc_qtClassify(node) == 1; }
+void shadowc_qtLeaf(ivec3 node) {
+  if (shadowc_qtClassify(node) == 1) shadowc_qtResolveLeaf(node);
+}
+
+// Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision.
+void shadowc_uniformWalk(int den) {
+  for (int j = 0; j < den; ++j)
+    for (int i = 0; i < den; ++i) shadowc_qtLeaf(ivec3(i, j, den));
+}
+
+#if defined(SHADOWC_QT_NODES)
+// Stackless table walk of Algorithm 2 ([Bun05], Fig. 5): Child on "descend", else Next. The
+// tables may be taller than `height`; nodes at that level are treated as leaves (their Next is
+// the same in the shorter tree). Bounded by the node count even for a broken table.
+void shadowc_qtWalk(int height) {
+  int node = 0;
+  for (int step = 0; step < SHADOWC_QT_NODES && node >= 0; ++step) {
+    ivec3 n = shadowc_qtNode[node];
+    if (shadowc_qtClassify(n) == 1) {
+      if (n.z < (1 << height) && shadowc_qtChild[node] >= 0) {
+        node = shadowc_qtChild[node];
+        continue;
+      }
+      shadowc_qtResolveLeaf(n);
+    }
+    node = shadowc_qtNext[node];
+  }
+}
+#endif
+
+// Average blocker depth over the search rectangle (L11-L15), or -1 when nothing occludes.
+float shadowc_vssmBlocker(ivec4 searchRect, float d) {
+  shadowc_vssmBegin(searchRect, d);
+#if SHADOWC_BLOCKER_SUBDIVISION == SHADOWC_SUBDIV_QUADTREE
+#if SHADOWC_QUADTREE_UNROLLED
+  shadowc_qtUnrolledBlocker();
+#else
+  shadowc_qtWalk(SHADOWC_BLOCKER_HEIGHT);
+#endif
+#elif SHADOWC_BLOCKER_SUBDIVISION == SHADOWC_SUBDIV_UNIFORM
+  shadowc_uniformWalk(SHADOWC_BLOCKER_M);
+#else
+  shadowc_uniformWalk(1);
+#endif
+  // Normal group: eq. 5 moments, then eq. 4 with z_unocc = t; its blocker area is (1 - P) T.
+  float a1 = 0.0;
+  float z1 = 0.0;
+  if (shadowc_aVsmArea > 0.0) {
+    float mean = shadowc_aEx / shadowc_aVsmArea;
+    float meanSq = shadowc_aEx2 / shadowc_aVsmArea;
+    float p = shadowc_chebyshev(mean, meanSq, d, shadowc_vMinVariance);
+    if (1.0 - p > 1e-4) {
+      z1 = clamp((mean - p * d) / (1.0 - p), 0.0, d);
+      a1 = (1.0 - p) * shadowc_aVsmArea;
+    }
+  }
+  // Non-planar group: the PCF samples' occluding depths (sec. 5.2), weighted by blocker area.
+  float a = a1 + shadowc_aPcfOcc;
+  if (!(a > 1e-6)) return -1.0;
+  return clamp((z1 * a1 + shadowc_aPcfDepth) / a, 0.0, d);
+}
+
+// Visibility over the penumbra rectangle (L17-L20, Algorithm 2 L28-L31).
+float shadowc_vssmVisibility(ivec4 rect, float d) {
+  shadowc_vssmBegin(rect, d);
+#if SHADOWC_KERNEL_SUBDIVISION == SHADOWC_SUBDIV_QUADTREE
+#if SHADOWC_QUADTREE_UNROLLED
+  shadowc_qtUnrolledKernel();
+#else
+  shadowc_qtWalk(SHADOWC_KERNEL_HEIGHT);
+#endif
+#elif SHADOWC_KERNEL_SUBDIVISION == SHADOWC_SUBDIV_UNIFORM
+  shadowc_uniformWalk(SHADOWC_KERNEL_N);
+#else
+  shadowc_uniformWalk(1);
+#endif
+  float l = 1.0;
+  if (shadowc_aVsmArea > 0.0)
+    l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
+                                                 shadowc_vMinVariance));
+  float l1 = shadowc_aPcfArea > 0.0 ? 1.0 - shadowc_aPcfOcc / shadowc_aPcfArea : 1.0;
+  float total = shadowc_aVsmArea + shadowc_aLitArea + shadowc_aPcfArea;
+  if (!(total > 0.0)) return 1.0;
+  return shadowc_unit((l * shadowc_aVsmArea + shadowc_aLitArea + l1 * shadowc_aPcfArea) / total);
+}
+
+float shadowc_vssm(ShadowcReceiver r) {
+  float zb = shadowc_vssmBlocker(shadowc_kernelRect(r.texel, shadowc_searchTexels(r)), r.d);
+  if (zb < 0.0) return 1.0;  // no blocker in the search region
+#if SHADOWC_KERNEL_PENUMBRA
+  float w = shadowc_penumbraTexels(r, zb);
+#else
+  float w = SHADOWC_KERNEL_FIXED_TEXELS;
+#endif
+#if SHADOWC_CONTACT
+  // sec. 6.4: blocker and receiver nearly touch; the SAT is least precise here and the penumbra
+  // is small, so a few bilinear PCF taps are both cheaper and more accurate.
+  if (abs(r.d - zb) < SHADOWC_CONTACT_EPSILON) return shadowc_pcfBilinearGrid(r.texel, w, r.d, SHADOWC_CONTACT_N);
+#endif
+  return shadowc_vssmVisibility(shadowc_kernelRect(r.texel, w), r.d);
+}
+
+#endif
