@@ -58,9 +58,11 @@ class PixelTracer {
       for (int i = 0; i < n_; ++i) {
         const uint64_t h = mix(mix(pixelIndex ^ kJitterSeed) + static_cast<uint64_t>(j * n_ + i));
         const glm::vec3 target = lightSamplePoint(light_, i, j, n_, unitFloat(h), unitFloat(mix(h)));
-        // tfar just short of the light: the light itself is not geometry, but a surface lying
-        // exactly in the light's plane must not count.
-        if (!embree_.occluded(org, target - org, 1.0f - 1e-5f)) ++visible;
+        // Traced from the light sample to the (offset) point, not the other way: the light's
+        // coordinates are the small ones, so an occluder 1e-3 in front of a light seen from a
+        // receiver 1e4 away (depth_range) is still resolved in fp32; the segment ends at the
+        // offset point, so the receiver itself is never hit.
+        if (!embree_.occluded(target, org - target, 1.0f)) ++visible;
       }
     }
     return static_cast<float>(visible) / static_cast<float>(n_ * n_);

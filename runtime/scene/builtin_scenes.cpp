@@ -69,7 +69,7 @@ const std::map<std::string, ordered_json>& builtins() {
         "stacked_planes",
         "Lauritzen 2008 Fig. 2 light bleeding: plane A (y=4) half covers plane B (y=2), which fully shadows the "
         "floor C; plain VSM leaks light onto C under A's edge (eq. 4).",
-        camera(v3(0, 1.0, 9), v3(0, 0.2, 0), 40), light("rect", v3(0, 8, 0), down, 0.6),
+        camera(v3(0, 1.2, 3.5), v3(0, 0, -1), 60), light("rect", v3(0, 8, 0), down, 0.6),
         {floorPlane(), plane("B", 4, 4, transform(v3(0, 2, 0))), plane("A", 3, 3, transform(v3(-1.5, 4, 0)))});
     t["contact"] = scene(
         "contact",

@@ -54,6 +54,17 @@ TEST(ReferenceEmbree, EdgeThroughTheLightCentreHidesHalfOfRectAndDisk) {
   EXPECT_EQ(referenceVisibilityAt(s, {1.6f, 0, 0}, {0, 1, 0}, 8), 1.0f);
 }
 
+TEST(ReferenceEmbree, ResolvesAnOccluderAMillimetreFromTheLightSeenFromTenThousand) {
+  // depth_range: the 4e-4 plane 1e-3 below the light shadows x in [1000, 5000] on the floor at
+  // y = -1e4 (umbra about [1500, 4500]). Traced from the receiver in fp32 it would be lost.
+  const Scene s = loadScene("depth_range");
+  EXPECT_EQ(referenceVisibilityAt(s, {3000, -10000, 0}, {0, 1, 0}, 8), 0.0f);
+  EXPECT_EQ(referenceVisibilityAt(s, {6000, -10000, 0}, {0, 1, 0}, 8), 1.0f);
+  const float penumbra = referenceVisibilityAt(s, {5000, -10000, 0}, {0, 1, 0}, 16);
+  EXPECT_GT(penumbra, 0.2f);
+  EXPECT_LT(penumbra, 0.8f);
+}
+
 TEST(ReferenceEmbree, LightSamplesCoverTheShape) {
   const Scene s = loadScene("empty");  // disk light of diameter 1 at (0, 6, 0)
   AreaLight l = s.light;
