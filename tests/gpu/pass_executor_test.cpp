@@ -233,6 +233,46 @@ TEST_F(ExecutorTest, TimingReportsEveryPass) {
   EXPECT_EQ(t.runs, 5);
 }
 
+// Attribution, not speed: a pass with ~1000x the work of its neighbour gets most of the time
+// whichever order they run in (lavapipe resolves timestamps lazily; a naive stamp placement
+// charged each pass's work to the next one).
+constexpr const char* kHeavy = R"(#version 460
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 1, r32f) writeonly uniform image2D heavy;
+void main() {
+  ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  float v = float(p.x) * 1e-3;
+  for (int i = 0; i < 3000; ++i) v = fract(v * 1.61803 + 0.1234);
+  imageStore(heavy, p, vec4(v));
+}
+)";
+constexpr const char* kLight = R"(#version 460
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 1, r32f) writeonly uniform image2D light;
+void main() { imageStore(light, ivec2(gl_GlobalInvocationID.xy), vec4(1.0)); }
+)";
+
+TEST_F(ExecutorTest, TimeGoesToThePassThatDidTheWork) {
+  const auto dir = freshTempDir("executor_attribution");
+  writeComputeSpirv(dir, "heavy.spv", kHeavy);
+  writeComputeSpirv(dir, "light.spv", kLight);
+  for (const bool heavyFirst : {true, false}) {
+    Manifest m;
+    ImageDesc heavyImage = image("heavy", ImageFormat::R32F);
+    ImageDesc lightImage = image("light", ImageFormat::R32F, SizeDomain::Map);
+    m.images = {heavyImage, lightImage};
+    Pass heavy = pass("heavy", {{1, "heavy", Access::StorageWrite, -1}});
+    Pass light = pass("light", {{1, "light", Access::StorageWrite, -1}});
+    light.dispatch.size = {SizeDomain::Map, 0};
+    m.passes = heavyFirst ? std::vector<Pass>{heavy, light} : std::vector<Pass>{light, heavy};
+    rt::PassExecutor ex(context(), m, dir, 8, 128, 128);
+    const rt::TimingResult t = ex.time(1, 5);
+    const double heavyMs = t.passes[heavyFirst ? 0 : 1].medianMs, lightMs = t.passes[heavyFirst ? 1 : 0].medianMs;
+    EXPECT_GT(heavyMs, 0.5 * t.totalMs) << "heavy first: " << heavyFirst << ", heavy " << heavyMs << " ms, light " << lightMs;
+    EXPECT_GT(heavyMs, 5 * lightMs) << "heavy first: " << heavyFirst;
+  }
+}
+
 // --- errors: each one names the pass and says what is wrong ---
 
 std::string errorOf(const Manifest& m, const std::filesystem::path& dir) {
