@@ -1,0 +1,101 @@
+// `shadowc compile` end to end through the executable: flags, depfiles, errors, atomicity.
+#include <sys/wait.h>
+
+#include <cstdio>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "emit/emit_support.h"
+
+namespace shadowc {
+namespace {
+
+struct CliRun {
+  int code;
+  std::string out;
+};
+
+CliRun shadowc(const std::string& args, const std::filesystem::path& stderrFile) {
+  const std::string cmd = std::string(SHADOWC_BINARY) + " " + args + " 2>" + stderrFile.string();
+  CliRun r{0, {}};
+  FILE* p = ::popen(cmd.c_str(), "r");
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
+  const int status = ::pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  return r;
+}
+
+const std::string kSample = test::samplePath("vssm_adaptive").string();
+
+TEST(CompileCommand, WritesTheOutputsAndAMakeDepfile) {
+  const auto dir = test::freshTempDir("cli-out");
+  const CliRun r = shadowc("compile " + kSample + " -o " + (dir / "o").string() + " -MD -O0", dir / "err");
+  ASSERT_EQ(r.code, 0) << test::readFile(dir / "err");
+  EXPECT_TRUE(std::filesystem::exists(dir / "o" / "manifest.json"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "o" / "shade.spv"));
+  const std::string dep = test::readFile(dir / "o" / "vssm_adaptive.d");
+  EXPECT_NE(dep.find("/o/manifest.json"), std::string::npos) << dep;
+  EXPECT_NE(dep.find(": " + kSample), std::string::npos) << dep;
+}
+
+TEST(CompileCommand, DashMPrintsDependenciesAndWritesNothing) {
+  const auto dir = test::freshTempDir("cli-M");
+  const CliRun r = shadowc("compile " + kSample + " -o " + (dir / "o").string() + " -M --emit spirv", dir / "err");
+  ASSERT_EQ(r.code, 0) << test::readFile(dir / "err");
+  EXPECT_NE(r.out.find("/o/shade.spv"), std::string::npos) << r.out;
+  EXPECT_EQ(r.out.find(".glsl"), std::string::npos) << "--emit spirv lists no GLSL: " << r.out;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o"));
+}
+
+TEST(CompileCommand, EmitSubsetWritesOnlyThoseKinds) {
+  const auto dir = test::freshTempDir("cli-emit");
+  const auto err = test::freshTempDir("cli-emit-err") / "err";
+  ASSERT_EQ(shadowc("compile " + kSample + " -o " + dir.string() + " --emit manifest", err).code, 0);
+  const auto files = test::readDir(dir);
+  EXPECT_EQ(files.size(), 1u);
+  EXPECT_TRUE(files.count("manifest.json"));
+}
+
+TEST(CompileCommand, PrintSpecAndRecipe) {
+  const auto dir = test::freshTempDir("cli-print");
+  const CliRun spec = shadowc("compile " + kSample + " --print-spec", dir / "err");
+  ASSERT_EQ(spec.code, 0);
+  EXPECT_EQ(nlohmann::json::parse(spec.out).at("name"), "vssm_adaptive");
+  const CliRun recipe = shadowc("compile --print-recipe", dir / "err");
+  ASSERT_EQ(recipe.code, 0);
+  EXPECT_NE(recipe.out.find("--ccp\n"), std::string::npos);
+}
+
+TEST(CompileCommand, BadFilterPrintsDiagnosticsExitsOneAndWritesNothing) {
+  const auto dir = test::freshTempDir("cli-bad");
+  { std::ofstream(dir / "bad.shadow") << "filter bad {\n    kernel quadtre(height: 3)\n}\n"; }
+  const CliRun r = shadowc("compile " + (dir / "bad.shadow").string() + " -o " + (dir / "o").string(), dir / "err");
+  EXPECT_EQ(r.code, 1);
+  const std::string err = test::readFile(dir / "err");
+  EXPECT_NE(err.find("bad.shadow:2:"), std::string::npos) << err;
+  EXPECT_NE(err.find("error"), std::string::npos) << err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "o"));
+}
+
+TEST(CompileCommand, UnwritableOutputIsOneClearMessage) {
+  const auto dir = test::freshTempDir("cli-unwritable");
+  { std::ofstream(dir / "file") << "x"; }
+  const CliRun r = shadowc("compile " + kSample + " -o " + (dir / "file" / "o").string(), dir / "err");
+  EXPECT_EQ(r.code, 1);
+  const std::string err = test::readFile(dir / "err");
+  EXPECT_NE(err.find("shadowc: error: cannot create output directory"), std::string::npos) << err;
+  EXPECT_EQ(std::count(err.begin(), err.end(), '\n'), 1) << err;
+}
+
+TEST(CompileCommand, UnknownFlagIsAnError) {
+  const auto dir = test::freshTempDir("cli-flag");
+  const CliRun r = shadowc("compile " + kSample + " -o " + (dir / "o").string() + " -O7", dir / "err");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(test::readFile(dir / "err").find("unknown argument '-O7'"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "o"));
+}
+
+}  // namespace
+}  // namespace shadowc
