@@ -1,0 +1,112 @@
+// compile_bench: what in-process compilation buys. For each sample filter, the median of N
+//   (a) in-process compiles of the emitted GLSL (glslang + -O recipe + spirv-val, linked in),
+//   (b) full in-process `emitFilter` (plan, specialize, preprocess, compile, lookup, manifest),
+//   (c) the same work as (a) done by running the glslangValidator, spirv-opt and spirv-val
+//       programs on the emitted GLSL files (std::system: allowed here, in the benchmark only).
+// Prints a markdown table and the ratio (c)/(a). Usage: compile_bench [N] [sample-substring].
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include <fmt/core.h>
+
+#include "compiler/backend/spirv_backend.h"
+#include "compiler/emit/filter_emitter.h"
+#include "compiler/emit/output_writer.h"
+#include "compiler/spec/load_filter.h"
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+namespace {
+
+double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
+}
+
+std::string recipeFlags() {
+  std::string s;
+  for (const auto& f : shadowc::optimizationRecipe()) s += " " + f;
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int n = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
+  const std::string only = argc > 2 ? argv[2] : "";
+  std::vector<fs::path> samples;
+  for (const auto& e : fs::directory_iterator(fs::path(SHADOWC_SOURCE_DIR) / "samples" / "filters"))
+    if (e.path().extension() == ".shadow" && e.path().stem().string().find(only) != std::string::npos)
+      samples.push_back(e.path());
+  std::sort(samples.begin(), samples.end());
+  const fs::path tmp = fs::temp_directory_path() / ("shadowc-compile-bench-" + std::to_string(::getpid()));
+  const std::string recipe = recipeFlags();
+
+  fmt::print("| filter | shaders | in-process compile (ms) | full emitFilter (ms) | glslangValidator + spirv-opt + spirv-val (ms) | external / in-process |\n");
+  fmt::print("|---|---:|---:|---:|---:|---:|\n");
+  std::vector<double> ratios;
+  double sumIn = 0, sumExt = 0, sumFull = 0;
+  for (const fs::path& file : samples) {
+    const shadowc::LoadResult loaded = shadowc::loadFilterFile(file.string());
+    if (!loaded.spec) {
+      fmt::print(stderr, "skipping {}: does not load\n", file.filename().string());
+      continue;
+    }
+    const shadowc::FilterEmitResult r = shadowc::emitFilter(*loaded.spec);
+    if (!r.ok) {
+      fmt::print(stderr, "skipping {}: {}\n", file.filename().string(), r.log);
+      continue;
+    }
+    const fs::path dir = tmp / loaded.spec->name;
+    std::vector<std::pair<std::string, std::string>> shaders;  // stem, glsl
+    for (const auto& f : r.files)
+      if (f.name.ends_with(".glsl") && f.name != shadowc::lookupFileName(loaded.spec->name))
+        shaders.emplace_back(f.name.substr(0, f.name.size() - 5), f.bytes);
+    if (!shadowc::writeFilesAtomically(dir, r.files).empty()) return 1;
+
+    std::vector<double> in, full, ext;
+    for (int i = 0; i < n; ++i) {
+      auto t0 = Clock::now();
+      for (const auto& [stem, glsl] : shaders) {
+        const auto res = shadowc::compileGlsl(glsl, shadowc::ShaderStage::Compute, stem, {}, {true, true});
+        if (!res.ok) return 1;
+      }
+      auto t1 = Clock::now();
+      const auto again = shadowc::emitFilter(*loaded.spec);
+      auto t2 = Clock::now();
+      if (!again.ok) return 1;
+      for (const auto& [stem, glsl] : shaders) {
+        const std::string base = (dir / stem).string();
+        const std::string cmd = "glslangValidator -S comp -V --target-env vulkan1.2 -o " + base + ".ext.spv " + base +
+                                ".glsl >/dev/null && spirv-opt --target-env=vulkan1.2" + recipe + " " + base +
+                                ".ext.spv -o " + base + ".opt.spv && spirv-val --target-env vulkan1.2 " + base + ".opt.spv";
+        if (std::system(cmd.c_str()) != 0) {
+          fmt::print(stderr, "external pipeline failed on {}\n", base);
+          return 1;
+        }
+      }
+      auto t3 = Clock::now();
+      in.push_back(ms(t0, t1));
+      full.push_back(ms(t1, t2));
+      ext.push_back(ms(t2, t3));
+    }
+    const double a = median(in), b = median(full), c = median(ext);
+    sumIn += a, sumFull += b, sumExt += c;
+    ratios.push_back(c / a);
+    fmt::print("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f}× |\n", loaded.spec->name, shaders.size(), a, b, c, c / a);
+  }
+  fs::remove_all(tmp);
+  if (ratios.empty()) return 1;
+  fmt::print("\n{} filters, {} runs each (medians). Totals: in-process compile {:.0f} ms, full emitFilter {:.0f} ms, "
+             "external programs {:.0f} ms; external/in-process: median {:.2f}×, total {:.2f}×\n",
+             ratios.size(), n, sumIn, sumFull, sumExt, median(ratios), sumExt / sumIn);
+  return 0;
+}
