@@ -1,5 +1,6 @@
 #include "runtime/images/atomic_file.h"
 
+#include <fmt/format.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -7,8 +8,6 @@
 #include <cstdio>
 #include <cstring>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace shadowc::rt {
 

@@ -1,11 +1,11 @@
 #include "runtime/images/png_image.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
-
-#include <fmt/format.h>
 
 #include "runtime/images/atomic_file.h"
 
@@ -90,11 +90,14 @@ Rgb8Image sideBySide(const std::vector<float>& result, const std::vector<float>&
 }
 
 void writePng(const std::filesystem::path& path, const Rgb8Image& image) {
-  if (image.width == 0 || image.height == 0 || image.pixels.size() != size_t(image.width) * image.height * image.channels) {
+  if (image.width == 0 || image.height == 0 ||
+      image.pixels.size() != size_t(image.width) * image.height * image.channels) {
     throw std::runtime_error(fmt::format("{}: cannot write: empty or inconsistent image", path.string()));
   }
   std::string bytes;
-  auto sink = [](void* ctx, void* data, int size) { static_cast<std::string*>(ctx)->append(static_cast<char*>(data), size_t(size)); };
+  auto sink = [](void* ctx, void* data, int size) {
+    static_cast<std::string*>(ctx)->append(static_cast<char*>(data), size_t(size));
+  };
   const int ok = stbi_write_png_to_func(sink, &bytes, int(image.width), int(image.height), int(image.channels),
                                         image.pixels.data(), int(image.width * image.channels));
   if (ok == 0) throw std::runtime_error(fmt::format("{}: cannot write: PNG encoding failed", path.string()));

@@ -1,10 +1,10 @@
 #include "runtime/metrics/metrics.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace shadowc::rt {
 

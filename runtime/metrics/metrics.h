@@ -3,21 +3,20 @@
 #pragma once
 
 #include <cstdint>
-#include <vector>
-
 #include <nlohmann/json.hpp>
+#include <vector>
 
 namespace shadowc::rt {
 
 struct Metrics {
-  uint64_t pixels = 0;          // pixels selected by the mask
-  uint64_t compared = 0;        // of those, with a finite result and reference (the error stats)
+  uint64_t pixels = 0;    // pixels selected by the mask
+  uint64_t compared = 0;  // of those, with a finite result and reference (the error stats)
   double rmse = 0, mae = 0, maxAbsError = 0;
-  double p99AbsError = 0;       // nearest-rank 99th percentile of |result - reference|
-  double lightBleeding = 0;     // fraction of `compared` with reference < 0.05 but result > 0.2
-  double overDarkening = 0;     // fraction of `compared` with reference > 0.95 but result < 0.8
-  uint64_t nonFinite = 0;       // NaN/Inf results (counted, never propagated into the stats)
-  uint64_t outOfRange = 0;      // finite results outside [0, 1]
+  double p99AbsError = 0;         // nearest-rank 99th percentile of |result - reference|
+  double lightBleeding = 0;       // fraction of `compared` with reference < 0.05 but result > 0.2
+  double overDarkening = 0;       // fraction of `compared` with reference > 0.95 but result < 0.8
+  uint64_t nonFinite = 0;         // NaN/Inf results (counted, never propagated into the stats)
+  uint64_t outOfRange = 0;        // finite results outside [0, 1]
   uint64_t invalidReference = 0;  // NaN/Inf reference pixels (skipped)
 };
 

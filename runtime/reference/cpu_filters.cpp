@@ -120,7 +120,8 @@ SatF32 buildSatF32(const ImageView& img, bool centered) {
     }
   }
   for (uint32_t y = 1; y < img.height; ++y) {  // columns
-    for (size_t k = 0; k < size_t(w) * ch; ++k) sat.data[size_t(y) * w * ch + k] += sat.data[size_t(y - 1) * w * ch + k];
+    for (size_t k = 0; k < size_t(w) * ch; ++k)
+      sat.data[size_t(y) * w * ch + k] += sat.data[size_t(y - 1) * w * ch + k];
   }
   return sat;
 }

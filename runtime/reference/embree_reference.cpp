@@ -1,5 +1,8 @@
 #include "runtime/reference/embree_reference.h"
 
+#include <fmt/format.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -9,9 +12,6 @@
 #include <fstream>
 #include <numbers>
 #include <stdexcept>
-
-#include <fmt/format.h>
-#include <tbb/parallel_for.h>
 
 #define XXH_INLINE_ALL
 #include <xxhash.h>
@@ -180,7 +180,8 @@ ReferenceResult traceReference(const Scene& scene, const std::vector<float>& pos
                                             positionsRGBA.size(), normalsRGBA.size(), pixels * 4, width, height));
   }
   if (samplesPerAxis < 1 || samplesPerAxis > 1024) {
-    throw std::invalid_argument(fmt::format("traceReference: samplesPerAxis must be in [1, 1024], got {}", samplesPerAxis));
+    throw std::invalid_argument(
+        fmt::format("traceReference: samplesPerAxis must be in [1, 1024], got {}", samplesPerAxis));
   }
   ReferenceResult r;
   r.width = width;
@@ -237,8 +238,8 @@ ReferenceResult traceReference(const Scene& scene, const std::vector<float>& pos
   return r;
 }
 
-float referenceVisibilityAt(const Scene& scene, const glm::vec3& position, const glm::vec3& normal,
-                            int samplesPerAxis, uint64_t pixelIndex) {
+float referenceVisibilityAt(const Scene& scene, const glm::vec3& position, const glm::vec3& normal, int samplesPerAxis,
+                            uint64_t pixelIndex) {
   const EmbreeScene embree(scene);
   return PixelTracer(embree, samplesPerAxis).visibility(position, normal, pixelIndex);
 }

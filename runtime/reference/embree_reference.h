@@ -8,10 +8,9 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <glm/glm.hpp>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "runtime/scene/scene.h"
 
@@ -19,8 +18,8 @@ namespace shadowc::rt {
 
 struct ReferenceProgress {
   uint64_t pixelsDone = 0, pixelsTotal = 0;
-  uint64_t rays = 0;       // traced so far
-  double seconds = 0;      // wall time so far
+  uint64_t rays = 0;   // traced so far
+  double seconds = 0;  // wall time so far
   double raysPerSecond = 0;
 };
 using ProgressFn = std::function<void(const ReferenceProgress&)>;
@@ -50,8 +49,8 @@ ReferenceResult traceReference(const Scene& scene, const std::vector<float>& pos
 
 // The visibility of one point, exactly as traceReference computes a pixel (pixelIndex seeds
 // the jitter). For tests and tools; builds its own BVH each call, so not for loops.
-float referenceVisibilityAt(const Scene& scene, const glm::vec3& position, const glm::vec3& normal,
-                            int samplesPerAxis, uint64_t pixelIndex = 0);
+float referenceVisibilityAt(const Scene& scene, const glm::vec3& position, const glm::vec3& normal, int samplesPerAxis,
+                            uint64_t pixelIndex = 0);
 
 // Point on the light for stratum (i, j) of n x n with jitter (ju, jv) in [0, 1): rectangle
 // sides along lightBasis x/y; disk by the concentric mapping. Exposed for tests.

@@ -1,10 +1,10 @@
 #include "runtime/reference/embree_scene.h"
 
+#include <fmt/format.h>
+
 #include <cstring>
 #include <limits>
 #include <stdexcept>
-
-#include <fmt/format.h>
 
 namespace shadowc::rt {
 namespace {
@@ -28,10 +28,10 @@ EmbreeScene::EmbreeScene(const Scene& scene) : source_(scene) {
     if (m.indices.size() < 3 || m.positions.empty()) continue;
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     // New (Embree-owned) buffers: Embree pads them for its 16-byte vertex loads.
-    auto* v = static_cast<float*>(
-        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.positions.size()));
-    auto* idx = static_cast<uint32_t*>(
-        rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), m.indices.size() / 3));
+    auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                          3 * sizeof(float), m.positions.size()));
+    auto* idx = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                               3 * sizeof(uint32_t), m.indices.size() / 3));
     throwIfError(device_, "buffer allocation");
     std::memcpy(v, m.positions.data(), m.positions.size() * sizeof(glm::vec3));
     std::memcpy(idx, m.indices.data(), (m.indices.size() / 3) * 3 * sizeof(uint32_t));

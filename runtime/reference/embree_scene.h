@@ -3,6 +3,7 @@
 #pragma once
 
 #include <embree3/rtcore.h>
+
 #include <glm/glm.hpp>
 
 #include "runtime/scene/scene.h"

@@ -3,12 +3,12 @@
 // exactly builtinSceneJson(name) (checked by tests/runtime/scene_builtin_test.cpp) and the
 // built-in and the file load to the same Scene and the same contentHash.
 // Conventions: y is up, the receiver floor is at y = 0 unless said otherwise.
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
 #include <fstream>
 #include <iterator>
 #include <map>
-
-#include <fmt/format.h>
-#include <fmt/ranges.h>
 #include <nlohmann/json.hpp>
 
 #include "runtime/scene/scene.h"
@@ -44,11 +44,13 @@ ordered_json box(const char* name, ordered_json size, ordered_json xform) {
   return {{"type", "box"}, {"name", name}, {"size", size}, {"transform", xform}};
 }
 ordered_json sphere(const char* name, double radius, ordered_json xform) {
-  return {{"type", "sphere"}, {"name", name}, {"radius", radius}, {"segments", 32}, {"rings", 16}, {"transform", xform}};
+  return {{"type", "sphere"}, {"name", name}, {"radius", radius},
+          {"segments", 32},   {"rings", 16},  {"transform", xform}};
 }
 ordered_json floorPlane(double size = 10) { return plane("floor", size, size, transform(v3(0, 0, 0))); }
 
-ordered_json scene(const char* name, const char* description, ordered_json cam, ordered_json lit, ordered_json objects) {
+ordered_json scene(const char* name, const char* description, ordered_json cam, ordered_json lit,
+                   ordered_json objects) {
   return {{"name", name}, {"description", description}, {"camera", cam}, {"light", lit}, {"objects", objects}};
 }
 
@@ -56,51 +58,50 @@ const std::map<std::string, ordered_json>& builtins() {
   static const std::map<std::string, ordered_json> table = [] {
     std::map<std::string, ordered_json> t;
     const ordered_json down = v3(0, -1, 0);
-    t["two_planes"] = scene(
-        "two_planes",
-        "One square occluder above a floor, both parallel to the light: the case where VSM's Chebyshev bound, "
-        "the VSSM blocker estimate and the PCSS penumbra formula are all exact.",
-        camera(v3(0, 6, 8), v3(0, 0, 0)), light("rect", v3(0, 6, 0), down, 1.0),
-        {floorPlane(), plane("occluder", 2, 2, transform(v3(0, 2, 0)))});
+    t["two_planes"] =
+        scene("two_planes",
+              "One square occluder above a floor, both parallel to the light: the case where VSM's Chebyshev bound, "
+              "the VSSM blocker estimate and the PCSS penumbra formula are all exact.",
+              camera(v3(0, 6, 8), v3(0, 0, 0)), light("rect", v3(0, 6, 0), down, 1.0),
+              {floorPlane(), plane("occluder", 2, 2, transform(v3(0, 2, 0)))});
     // lauritzen2008 sec. 3.1, Fig. 2: A casts a shadow onto B; C lies entirely in B's shadow, yet a filter
     // region straddling A's edge sees depths a and b only, so plain VSM lets eq. (4) worth of light through
     // onto C. The camera sits below B to look at C.
-    t["stacked_planes"] = scene(
-        "stacked_planes",
-        "Lauritzen 2008 Fig. 2 light bleeding: plane A (y=4) half covers plane B (y=2), which fully shadows the "
-        "floor C; plain VSM leaks light onto C under A's edge (eq. 4).",
-        camera(v3(0, 1.2, 3.5), v3(0, 0, -1), 60), light("rect", v3(0, 8, 0), down, 0.6),
-        {floorPlane(), plane("B", 4, 4, transform(v3(0, 2, 0))), plane("A", 3, 3, transform(v3(-1.5, 4, 0)))});
-    t["contact"] = scene(
-        "contact",
-        "Boxes and spheres resting on the floor: the penumbra shrinks to zero where they touch it (contact "
-        "hardening), and the blocker depth equals the receiver depth there.",
-        camera(v3(3, 4, 7), v3(0, 0.5, 0)),
-        light("rect", v3(1, 7, 1), ordered_json(v3(-0.1, -1, -0.1)), 1.5),
-        {floorPlane(), box("cube", v3(1, 1, 1), transform(v3(-1.5, 0.5, 0), v3(0, 20, 0))),
-         sphere("ball", 0.7, transform(v3(1.2, 0.7, 0.5))),
-         box("pillar", v3(0.6, 2, 0.6), transform(v3(0, 1, -1.5), v3(0, 30, 0)))});
-    t["overlapping_occluders"] = scene(
-        "overlapping_occluders",
-        "Non-planar blockers at several depths overlapping as seen from the light: the average-blocker depth of "
-        "PCSS/VSSM is wrong for every one of them, and filter regions hold several depth layers.",
-        camera(v3(0, 7, 8), v3(0, 0.5, 0)), light("rect", v3(0, 8, 0), down, 1.2),
-        {floorPlane(), sphere("low_ball", 0.6, transform(v3(-0.5, 1.0, 0.3))),
-         box("tilted_box", v3(1.2, 0.3, 1.2), transform(v3(0.4, 2.5, -0.2), v3(25, 30, 15))),
-         sphere("high_ball", 0.5, transform(v3(0.6, 4.0, 0.6))),
-         box("plank", v3(3, 0.08, 0.4), transform(v3(0, 3.2, 0), v3(0, 45, 0)))});
-    t["large_penumbra"] = scene(
-        "large_penumbra",
-        "A 4-unit light close to the occluder: penumbrae span a large fraction of the shadow map, so fixed "
-        "kernels and small blocker searches fail and SAT/mip filters must cover huge regions.",
-        camera(v3(0, 7, 9), v3(0, 0, 0)), light("rect", v3(0, 5, 0), down, 4.0),
-        {floorPlane(14), box("block", v3(1.5, 0.5, 1.5), transform(v3(0, 2.5, 0)))});
-    t["small_penumbra"] = scene(
-        "small_penumbra",
-        "A 0.05-unit light far away, occluder near the floor: penumbrae narrower than a shadow-map texel, so the "
-        "result is limited by resolution and bias, and any blur over-softens.",
-        camera(v3(0, 5, 6), v3(0, 0, 0)), light("rect", v3(0, 10, 0), down, 0.05),
-        {floorPlane(), box("block", v3(1.5, 0.4, 1.5), transform(v3(0, 0.8, 0), v3(0, 30, 0)))});
+    t["stacked_planes"] =
+        scene("stacked_planes",
+              "Lauritzen 2008 Fig. 2 light bleeding: plane A (y=4) half covers plane B (y=2), which fully shadows the "
+              "floor C; plain VSM leaks light onto C under A's edge (eq. 4).",
+              camera(v3(0, 1.2, 3.5), v3(0, 0, -1), 60), light("rect", v3(0, 8, 0), down, 0.6),
+              {floorPlane(), plane("B", 4, 4, transform(v3(0, 2, 0))), plane("A", 3, 3, transform(v3(-1.5, 4, 0)))});
+    t["contact"] =
+        scene("contact",
+              "Boxes and spheres resting on the floor: the penumbra shrinks to zero where they touch it (contact "
+              "hardening), and the blocker depth equals the receiver depth there.",
+              camera(v3(3, 4, 7), v3(0, 0.5, 0)), light("rect", v3(1, 7, 1), ordered_json(v3(-0.1, -1, -0.1)), 1.5),
+              {floorPlane(), box("cube", v3(1, 1, 1), transform(v3(-1.5, 0.5, 0), v3(0, 20, 0))),
+               sphere("ball", 0.7, transform(v3(1.2, 0.7, 0.5))),
+               box("pillar", v3(0.6, 2, 0.6), transform(v3(0, 1, -1.5), v3(0, 30, 0)))});
+    t["overlapping_occluders"] =
+        scene("overlapping_occluders",
+              "Non-planar blockers at several depths overlapping as seen from the light: the average-blocker depth of "
+              "PCSS/VSSM is wrong for every one of them, and filter regions hold several depth layers.",
+              camera(v3(0, 7, 8), v3(0, 0.5, 0)), light("rect", v3(0, 8, 0), down, 1.2),
+              {floorPlane(), sphere("low_ball", 0.6, transform(v3(-0.5, 1.0, 0.3))),
+               box("tilted_box", v3(1.2, 0.3, 1.2), transform(v3(0.4, 2.5, -0.2), v3(25, 30, 15))),
+               sphere("high_ball", 0.5, transform(v3(0.6, 4.0, 0.6))),
+               box("plank", v3(3, 0.08, 0.4), transform(v3(0, 3.2, 0), v3(0, 45, 0)))});
+    t["large_penumbra"] =
+        scene("large_penumbra",
+              "A 4-unit light close to the occluder: penumbrae span a large fraction of the shadow map, so fixed "
+              "kernels and small blocker searches fail and SAT/mip filters must cover huge regions.",
+              camera(v3(0, 7, 9), v3(0, 0, 0)), light("rect", v3(0, 5, 0), down, 4.0),
+              {floorPlane(14), box("block", v3(1.5, 0.5, 1.5), transform(v3(0, 2.5, 0)))});
+    t["small_penumbra"] =
+        scene("small_penumbra",
+              "A 0.05-unit light far away, occluder near the floor: penumbrae narrower than a shadow-map texel, so the "
+              "result is limited by resolution and bias, and any blur over-softens.",
+              camera(v3(0, 5, 6), v3(0, 0, 0)), light("rect", v3(0, 10, 0), down, 0.05),
+              {floorPlane(), box("block", v3(1.5, 0.4, 1.5), transform(v3(0, 0.8, 0), v3(0, 30, 0)))});
     // The light sits at the origin looking down; occluders at 1e-3, 1, 100 and near the floor at 1e4, so
     // the fitted near/far planes are about 1e-3 and 1e4 (fp32 depth, moment and SAT precision).
     t["depth_range"] = scene(
@@ -109,46 +110,49 @@ const std::map<std::string, ordered_json>& builtins() {
         "near the floor 1e4 away; stresses fp32/fp16 depth, moment and SAT precision and bias scaling.",
         camera(v3(0, -3000, 9000), v3(0, -10000, 0), 60), light("rect", v3(0, 0, 0), down, 1e-4),
         {plane("floor", 20000, 20000, transform(v3(0, -10000, 0))),
-         plane("tiny", 4e-4, 4e-4, transform(v3(3e-4, -1e-3, 0))),
-         plane("small", 0.3, 0.3, transform(v3(-0.3, -1, 0))),
+         plane("tiny", 4e-4, 4e-4, transform(v3(3e-4, -1e-3, 0))), plane("small", 0.3, 0.3, transform(v3(-0.3, -1, 0))),
          box("medium", v3(30, 30, 30), transform(v3(0, -100, 30))),
          sphere("near_floor", 500, transform(v3(-2500, -9500, -2500)))});
     t["grazing"] = scene(
         "grazing",
         "The light skims the floor at about 3 degrees: shadows stretch far, shadow-map texels cover long strips "
         "of the receiver, and slope-dependent bias decides between acne and peter-panning.",
-        camera(v3(8, 6, 12), v3(0, 0, 0)), light("rect", v3(0, 1.0, -18), ordered_json(v3(0, -1, 18)), 0.5, v3(0, 1, 0)),
+        camera(v3(8, 6, 12), v3(0, 0, 0)),
+        light("rect", v3(0, 1.0, -18), ordered_json(v3(0, -1, 18)), 0.5, v3(0, 1, 0)),
         {plane("floor", 12, 20, transform(v3(0, 0, 0))), box("post", v3(0.3, 1.2, 0.3), transform(v3(-1, 0.6, -6))),
          box("wall", v3(3, 0.5, 0.2), transform(v3(1.5, 0.25, -2))), sphere("ball", 0.4, transform(v3(-2, 0.4, 2)))});
-    t["thin_occluders"] = scene(
-        "thin_occluders",
-        "Poles and bars thinner than the penumbra and near a texel wide: shadows never reach full darkness, "
-        "features are lost by coarse maps and averaged away by big kernels.",
-        camera(v3(0, 6, 8), v3(0, 0.5, 0)), light("rect", v3(0, 7, 0), down, 1.0),
-        {floorPlane(), box("pole_1", v3(0.05, 3, 0.05), transform(v3(-2, 1.5, 0))),
-         box("pole_2", v3(0.05, 3, 0.05), transform(v3(2, 1.5, 0))),
-         box("bar", v3(4, 0.03, 0.03), transform(v3(0, 3, 0))),
-         box("bar_low", v3(4, 0.02, 0.02), transform(v3(0, 0.5, 1), v3(0, 20, 0))),
-         box("slat_1", v3(0.02, 0.02, 3), transform(v3(-0.5, 2, 0))),
-         box("slat_2", v3(0.02, 0.02, 3), transform(v3(0.5, 2, 0)))});
+    t["thin_occluders"] =
+        scene("thin_occluders",
+              "Poles and bars thinner than the penumbra and near a texel wide: shadows never reach full darkness, "
+              "features are lost by coarse maps and averaged away by big kernels.",
+              camera(v3(0, 6, 8), v3(0, 0.5, 0)), light("rect", v3(0, 7, 0), down, 1.0),
+              {floorPlane(), box("pole_1", v3(0.05, 3, 0.05), transform(v3(-2, 1.5, 0))),
+               box("pole_2", v3(0.05, 3, 0.05), transform(v3(2, 1.5, 0))),
+               box("bar", v3(4, 0.03, 0.03), transform(v3(0, 3, 0))),
+               box("bar_low", v3(4, 0.02, 0.02), transform(v3(0, 0.5, 1), v3(0, 20, 0))),
+               box("slat_1", v3(0.02, 0.02, 3), transform(v3(-0.5, 2, 0))),
+               box("slat_2", v3(0.02, 0.02, 3), transform(v3(0.5, 2, 0)))});
     t["empty"] = scene("empty",
                        "Only the receiver: nothing casts a shadow, every lit pixel must stay exactly 1 (acne, bias, "
                        "SAT and moment round-off show up as darkening).",
                        camera(v3(0, 6, 8), v3(0, 0, 0)), light("disk", v3(0, 6, 0), down, 1.0), {floorPlane()});
     // The camera sits below the occluder and looks down, so it sees only the floor (all dark).
-    t["fully_occluded"] = scene(
-        "fully_occluded",
-        "The floor lies entirely under a larger occluder: every receiver must be exactly 0 (moments with zero "
-        "variance, P -> 1 in the blocker estimate, min-max early outs).",
-        camera(v3(0, 1.2, 4.5), v3(0, 0, 0), 26), light("rect", v3(0, 5, 0), down, 1.0),
-        {floorPlane(8), plane("roof", 12, 12, transform(v3(0, 1.5, 0)))});
-    t["mesh"] = scene(
-        "mesh",
-        "A torus knot loaded from samples/scenes/knot.obj through assimp: curved self-shadowing geometry with "
-        "several depth layers, smooth normals, no planar occluder anywhere.",
-        camera(v3(3, 5, 6), v3(0, 0.8, 0)), light("disk", v3(1, 7, 1), ordered_json(v3(-0.15, -1, -0.15)), 1.0),
-        {floorPlane(8),
-         {{"type", "mesh"}, {"name", "knot"}, {"path", "knot.obj"}, {"transform", transform(v3(0, 2.0, 0), v3(20, 0, 0), 2.0)}}});
+    t["fully_occluded"] =
+        scene("fully_occluded",
+              "The floor lies entirely under a larger occluder: every receiver must be exactly 0 (moments with zero "
+              "variance, P -> 1 in the blocker estimate, min-max early outs).",
+              camera(v3(0, 1.2, 4.5), v3(0, 0, 0), 26), light("rect", v3(0, 5, 0), down, 1.0),
+              {floorPlane(8), plane("roof", 12, 12, transform(v3(0, 1.5, 0)))});
+    t["mesh"] =
+        scene("mesh",
+              "A torus knot loaded from samples/scenes/knot.obj through assimp: curved self-shadowing geometry with "
+              "several depth layers, smooth normals, no planar occluder anywhere.",
+              camera(v3(3, 5, 6), v3(0, 0.8, 0)), light("disk", v3(1, 7, 1), ordered_json(v3(-0.15, -1, -0.15)), 1.0),
+              {floorPlane(8),
+               {{"type", "mesh"},
+                {"name", "knot"},
+                {"path", "knot.obj"},
+                {"transform", transform(v3(0, 2.0, 0), v3(20, 0, 0), 2.0)}}});
     return t;
   }();
   return table;

@@ -1,11 +1,11 @@
 // setupFrame: fits the light frustum to the scene and fills ShadowcFrame (templates/frame.glsl).
 #include "runtime/scene/frame_setup.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-
-#include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
@@ -108,8 +108,8 @@ FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint
   f.cameraFar = std::max(farDist * 1.05f, 1e-3f);
   f.cameraNear = std::max(nearDist * 0.9f, f.cameraFar * 1e-5f);
   f.cameraView = glm::lookAtRH(cam.eye, cam.target, cam.up);
-  f.cameraProj = glm::perspectiveRH_ZO(glm::radians(cam.fovYDegrees), static_cast<float>(width) / height,
-                                       f.cameraNear, f.cameraFar);
+  f.cameraProj = glm::perspectiveRH_ZO(glm::radians(cam.fovYDegrees), static_cast<float>(width) / height, f.cameraNear,
+                                       f.cameraFar);
   f.cameraProj[1][1] *= -1.0f;  // Vulkan's y points down: keep row 0 at the top of the image
   f.cameraViewProj = f.cameraProj * f.cameraView;
 

@@ -3,7 +3,6 @@
 #pragma once
 
 #include <cstdint>
-
 #include <glm/glm.hpp>
 
 #include "manifest/frame_uniforms.h"
@@ -12,15 +11,15 @@
 namespace shadowc::rt {
 
 struct FrameSetup {
-  ShadowcFrame frame{};          // what every pass reads (binding 0)
-  glm::mat4 lightView{1};        // world -> light view (+z forward, as frame.glsl)
-  glm::mat4 lightViewProj{1};    // world -> Vulkan clip for rasterizing the light depth
-  glm::mat4 cameraViewProj{1};   // world -> Vulkan clip for the G-buffer
+  ShadowcFrame frame{};         // what every pass reads (binding 0)
+  glm::mat4 lightView{1};       // world -> light view (+z forward, as frame.glsl)
+  glm::mat4 lightViewProj{1};   // world -> Vulkan clip for rasterizing the light depth
+  glm::mat4 cameraViewProj{1};  // world -> Vulkan clip for the G-buffer
   float tanHalfFov = 1, nearPlane = 0.1f, farPlane = 100;
   uint32_t mapSize = 1024, width = 512, height = 512;
   // Camera parts of cameraViewProj (= cameraProj * cameraView), for G-buffer shaders and tools.
-  glm::mat4 cameraView{1};       // world -> camera view (right-handed, looking down -z)
-  glm::mat4 cameraProj{1};       // Vulkan clip: y flipped (row 0 = top of the image), depth 0..1
+  glm::mat4 cameraView{1};  // world -> camera view (right-handed, looking down -z)
+  glm::mat4 cameraProj{1};  // Vulkan clip: y flipped (row 0 = top of the image), depth 0..1
   float cameraNear = 0.1f, cameraFar = 100;
 };
 

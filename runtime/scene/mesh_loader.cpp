@@ -1,10 +1,11 @@
 #include "runtime/scene/mesh_loader.h"
 
-#include <assimp/Importer.hpp>
 #include <assimp/postprocess.h>
 #include <assimp/scene.h>
 #include <fmt/format.h>
 #include <fmt/std.h>
+
+#include <assimp/Importer.hpp>
 
 namespace shadowc::rt {
 

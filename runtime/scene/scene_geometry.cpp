@@ -1,10 +1,9 @@
 #include "runtime/scene/scene_geometry.h"
 
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <numbers>
 #include <utility>
-
-#include <glm/gtc/matrix_transform.hpp>
 
 namespace shadowc::rt {
 

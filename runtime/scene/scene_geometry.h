@@ -19,7 +19,7 @@ struct Transform {
   glm::vec3 translate{0};
   glm::vec3 rotateDegrees{0};  // applied x first, then y, then z (R = Rz * Ry * Rx)
   glm::vec3 scale{1};
-  glm::mat4 matrix() const;    // T * R * S
+  glm::mat4 matrix() const;  // T * R * S
 };
 
 // Applies `t` in place: positions by the matrix, normals by its inverse transpose

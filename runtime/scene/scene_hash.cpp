@@ -1,8 +1,8 @@
 // Scene::contentHash (XXH3-128 over every field, geometry included) and sceneBounds.
+#include <fmt/format.h>
+
 #include <cstring>
 #include <type_traits>
-
-#include <fmt/format.h>
 
 #define XXH_INLINE_ALL
 #include <xxhash.h>
@@ -23,10 +23,8 @@ class Hasher {
 
   void bytes(const void* p, size_t n) { XXH3_128bits_update(state_, p, n); }
   template <typename T>
-    requires std::is_trivially_copyable_v<T>
-  void pod(const T& v) {
-    bytes(&v, sizeof v);
-  }
+  requires std::is_trivially_copyable_v<T>
+  void pod(const T& v) { bytes(&v, sizeof v); }
   void str(const std::string& s) {
     pod(static_cast<uint64_t>(s.size()));
     bytes(s.data(), s.size());

@@ -18,7 +18,7 @@ TEST(Metrics, HandComputedErrors) {
   EXPECT_NEAR(m.mae, 1.0 / 5, 1e-12);
   EXPECT_NEAR(m.rmse, std::sqrt(0.5 / 5), 1e-12);
   EXPECT_DOUBLE_EQ(m.maxAbsError, 0.5);
-  EXPECT_DOUBLE_EQ(m.p99AbsError, 0.5);  // nearest rank: ceil(0.99 * 5) = 5th smallest
+  EXPECT_DOUBLE_EQ(m.p99AbsError, 0.5);          // nearest rank: ceil(0.99 * 5) = 5th smallest
   EXPECT_NEAR(m.lightBleeding, 1.0 / 5, 1e-12);  // pixel 1: ref 0, result 0.5
   EXPECT_NEAR(m.overDarkening, 1.0 / 5, 1e-12);  // pixel 3: ref 1, result 0.5
   EXPECT_EQ(m.nonFinite, 0u);

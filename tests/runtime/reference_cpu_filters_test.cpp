@@ -22,7 +22,7 @@ TEST(ReferenceCpuFilters, PcfGridCountsLitTexelsWithClampToEdge) {
   for (int y = 0; y < 4; ++y)
     for (int x = 0; x < 4; ++x) d[y * 4 + x] = x < 2 ? 0.2f : 0.9f;
   const ImageView img{d.data(), 4, 4, 1};
-  EXPECT_DOUBLE_EQ(pcfGrid(img, 1, 1, 2, 0.5, 0.0), 0.5);   // columns 1 (dark) and 2 (lit)
+  EXPECT_DOUBLE_EQ(pcfGrid(img, 1, 1, 2, 0.5, 0.0), 0.5);  // columns 1 (dark) and 2 (lit)
   EXPECT_DOUBLE_EQ(pcfGrid(img, 0, 0, 4, 0.5, 0.0), 0.5);
   EXPECT_DOUBLE_EQ(pcfGrid(img, -3, 0, 3, 0.5, 0.0), 0.0);  // clamped: columns -3..-1 read column 0
   EXPECT_DOUBLE_EQ(pcfGrid(img, 3, 3, 3, 0.5, 0.0), 1.0);   // clamped to the lit edge
@@ -39,13 +39,15 @@ TEST(ReferenceCpuFilters, PcfGridCountsLitTexelsWithClampToEdge) {
 TEST(ReferenceCpuFilters, BilinearPcfInterpolatesCompareResults) {
   std::vector<float> d = {0.2f, 0.9f, 0.2f, 0.9f};  // 2x2: left dark, right lit
   const ImageView img{d.data(), 2, 2, 1};
-  EXPECT_DOUBLE_EQ(pcfBilinear(img, 0.25, 0.5, 0.5, 0), 0.0);   // texel 0 centre
-  EXPECT_DOUBLE_EQ(pcfBilinear(img, 0.75, 0.5, 0.5, 0), 1.0);   // texel 1 centre
-  EXPECT_DOUBLE_EQ(pcfBilinear(img, 0.5, 0.5, 0.5, 0), 0.5);    // halfway
+  EXPECT_DOUBLE_EQ(pcfBilinear(img, 0.25, 0.5, 0.5, 0), 0.0);    // texel 0 centre
+  EXPECT_DOUBLE_EQ(pcfBilinear(img, 0.75, 0.5, 0.5, 0), 1.0);    // texel 1 centre
+  EXPECT_DOUBLE_EQ(pcfBilinear(img, 0.5, 0.5, 0.5, 0), 0.5);     // halfway
   EXPECT_DOUBLE_EQ(pcfBilinear(img, 0.375, 0.1, 0.5, 0), 0.25);  // a quarter of the way
   // Grid of bilinear taps = mean of its taps.
-  const double expected = (pcfBilinear(img, 0.5 - 0.25, 0.5 - 0.25, 0.5, 0) + pcfBilinear(img, 0.5 + 0.25, 0.5 - 0.25, 0.5, 0) +
-                           pcfBilinear(img, 0.5 - 0.25, 0.5 + 0.25, 0.5, 0) + pcfBilinear(img, 0.5 + 0.25, 0.5 + 0.25, 0.5, 0)) / 4;
+  const double expected =
+      (pcfBilinear(img, 0.5 - 0.25, 0.5 - 0.25, 0.5, 0) + pcfBilinear(img, 0.5 + 0.25, 0.5 - 0.25, 0.5, 0) +
+       pcfBilinear(img, 0.5 - 0.25, 0.5 + 0.25, 0.5, 0) + pcfBilinear(img, 0.5 + 0.25, 0.5 + 0.25, 0.5, 0)) /
+      4;
   EXPECT_DOUBLE_EQ(pcfBilinearGrid(img, 0.5, 0.5, 2, 0.5, 0), expected);
 }
 
@@ -94,7 +96,8 @@ TEST(ReferenceCpuFilters, SatInt32WrapsAroundAndStaysExact) {
   const ImageView img{ramp.data(), n, n, 1};
   const SatF32 naive = buildSatF32(img, false);
   double worst = 0;
-  for (int y = 280; y < 299; ++y) worst = std::max(worst, std::abs(satBoxMean(naive, {290, y, 290, y}) - img.at(290, y)));
+  for (int y = 280; y < 299; ++y)
+    worst = std::max(worst, std::abs(satBoxMean(naive, {290, y, 290, y}) - img.at(290, y)));
   EXPECT_GT(worst, 1e-4);
 }
 

@@ -111,8 +111,9 @@ TEST_F(ReferenceImage, CpuGBufferSeesTheFloorAndBackground) {
 
 TEST_F(ReferenceImage, TracesDeterministicallyWithProgressAndBackgroundLit) {
   std::vector<ReferenceProgress> reports;
-  const ReferenceResult a = traceReference(scene, gbuffer.positions, gbuffer.normals, 64, 64, 4, {},
-                                           [&](const ReferenceProgress& p) { reports.push_back(p); }, false);
+  const ReferenceResult a = traceReference(
+      scene, gbuffer.positions, gbuffer.normals, 64, 64, 4, {},
+      [&](const ReferenceProgress& p) { reports.push_back(p); }, false);
   const ReferenceResult b = traceReference(scene, gbuffer.positions, gbuffer.normals, 64, 64, 4, {}, {}, false);
   ASSERT_EQ(a.visibility.size(), 64u * 64);
   EXPECT_EQ(a.visibility, b.visibility);

@@ -11,9 +11,9 @@ namespace {
 
 TEST(SceneBuiltin, HasEveryRequiredHardCase) {
   const auto names = builtinSceneNames();
-  for (const char* required : {"two_planes", "stacked_planes", "contact", "overlapping_occluders", "large_penumbra",
-                               "small_penumbra", "depth_range", "grazing", "thin_occluders", "empty",
-                               "fully_occluded", "mesh"}) {
+  for (const char* required :
+       {"two_planes", "stacked_planes", "contact", "overlapping_occluders", "large_penumbra", "small_penumbra",
+        "depth_range", "grazing", "thin_occluders", "empty", "fully_occluded", "mesh"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), required), names.end()) << required;
     EXPECT_FALSE(builtinSceneDescription(required).empty()) << required;
   }
@@ -79,9 +79,7 @@ TEST(SceneBuiltin, ContentHashIsStableAndSeesEveryField) {
   EXPECT_TRUE(changed([](Scene& s) { s.meshes[1].normals[0] = -s.meshes[1].normals[0]; }));
   EXPECT_TRUE(changed([](Scene& s) { std::swap(s.meshes[0].indices[0], s.meshes[0].indices[1]); }));
   // Moving a triangle from one mesh to the next is a different scene.
-  EXPECT_TRUE(changed([](Scene& s) {
-    s.meshes[0].indices.resize(3);
-  }));
+  EXPECT_TRUE(changed([](Scene& s) { s.meshes[0].indices.resize(3); }));
   EXPECT_FALSE(changed([](Scene&) {}));
 }
 

@@ -62,7 +62,8 @@ TEST(SceneFrameSetup, UniformsFollowFrameGlsl) {
   // Column-major: element [12..14] is the translation column.
   const glm::vec3 centre = glm::vec3(glm::make_mat4(u.lightView) * glm::vec4(s.light.position, 1));
   EXPECT_NEAR(glm::length(centre), 0.0f, 1e-5f);
-  const glm::vec3 ahead = glm::vec3(glm::make_mat4(u.lightView) * glm::vec4(s.light.position + 3.0f * s.light.direction, 1));
+  const glm::vec3 ahead =
+      glm::vec3(glm::make_mat4(u.lightView) * glm::vec4(s.light.position + 3.0f * s.light.direction, 1));
   EXPECT_NEAR(ahead.x, 0, 1e-5f);
   EXPECT_NEAR(ahead.y, 0, 1e-5f);
   EXPECT_NEAR(ahead.z, 3, 1e-5f);

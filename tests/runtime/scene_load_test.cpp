@@ -2,7 +2,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-
 #include <glm/gtc/constants.hpp>
 
 #include "runtime/scene/scene.h"
@@ -33,7 +32,8 @@ std::string loadError(const std::string& nameOrPath) {
 std::string withObjects(const std::string& objects) {
   return R"({"camera": {"eye": [0, 5, 5], "target": [0, 0, 0]},
   "light": {"position": [0, 5, 0], "direction": [0, -1, 0], "size": 1},
-  "objects": )" + objects + "}";
+  "objects": )" +
+         objects + "}";
 }
 
 TEST(SceneLoad, PrimitivesAndTransforms) {
@@ -42,7 +42,8 @@ TEST(SceneLoad, PrimitivesAndTransforms) {
     {"type": "box", "name": "b", "size": [1, 2, 3], "transform": {"translate": [0, 1, 0], "scale": 2}},
     {"type": "sphere", "radius": 0.5, "segments": 8, "rings": 4, "transform": {"translate": [1, 1, 1]}},
     {"type": "box", "size": 1, "transform": {"rotate": [0, 90, 0], "translate": [2, 1, 0], "scale": [2, 1, 1]}}
-  ])"), "t.json", ".");
+  ])"),
+                             "t.json", ".");
   ASSERT_EQ(s.meshes.size(), 4u);
   EXPECT_EQ(s.name, "t");
   EXPECT_EQ(s.meshes[0].name, "plane0");
