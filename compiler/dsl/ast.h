@@ -39,6 +39,7 @@ struct FilterDecl {
   std::string name;
   int line = 0, column = 0;  // of the `filter` keyword
   std::vector<Setting> settings;
+  std::vector<int> badLines;  // lines with lexical errors: their settings are not checked
 };
 
 struct File {

@@ -48,7 +48,7 @@ std::string describe(const Token& t) {
   }
 }
 
-std::vector<Token> lex(std::string_view src, DiagnosticSink& sink) {
+std::vector<Token> lex(std::string_view src, DiagnosticSink& sink, std::vector<int>* badLines) {
   std::vector<Token> tokens;
   const char* why = "";
   if (const size_t bad = firstNonText(src, &why); bad != std::string_view::npos) {
@@ -63,6 +63,9 @@ std::vector<Token> lex(std::string_view src, DiagnosticSink& sink) {
   size_t lineBegin = 0;
   bool atLineStart = true;
   auto column = [&](size_t at) { return static_cast<int>(at - lineBegin) + 1; };
+  auto markBad = [&] {
+    if (badLines && (badLines->empty() || badLines->back() != line)) badLines->push_back(line);
+  };
   while (i < src.size() && !sink.stopped()) {
     const char c = src[i];
     if (c == '\n') {
@@ -82,6 +85,7 @@ std::vector<Token> lex(std::string_view src, DiagnosticSink& sink) {
       t.kind = TokenKind::Name;
       t.text = src.substr(start, i - start);
       if (t.text.size() > kMaxNameLength) {
+        markBad();
         sink.report(DiagId::identifierTooLong, t.line, t.column, static_cast<int>(t.text.size()), t.text.size(),
                     kMaxNameLength);
         continue;
@@ -90,6 +94,7 @@ std::vector<Token> lex(std::string_view src, DiagnosticSink& sink) {
                               (isDigit(src[i + 1]) || (src[i + 1] == '.' && c != '.')))) {
       // A number, or a size WxH: the whole run of number-ish characters is one token so that
       // "1.2.3" or "3x" is one error rather than several.
+      ++i;  // the first character (digit, sign or '.') always belongs to the token
       while (i < src.size() && (isNameChar(src[i]) || src[i] == '.' ||
                                 ((src[i] == '-' || src[i] == '+') && (src[i - 1] == 'e' || src[i - 1] == 'E'))))
         ++i;
@@ -105,6 +110,7 @@ std::vector<Token> lex(std::string_view src, DiagnosticSink& sink) {
           return true;
         };
         if (!allDigits(w) || !allDigits(h)) {
+          markBad();
           sink.report(DiagId::malformedSize, t.line, t.column, len, text);
           continue;
         }
@@ -113,10 +119,12 @@ std::vector<Token> lex(std::string_view src, DiagnosticSink& sink) {
         char* end = nullptr;
         const double v = std::strtod(text.c_str(), &end);
         if (end != text.c_str() + text.size()) {
+          markBad();
           sink.report(DiagId::malformedNumber, t.line, t.column, len, text);
           continue;
         }
         if (!std::isfinite(v) || std::fabs(v) > 1e30) {
+          markBad();
           sink.report(DiagId::numberOutOfRange, t.line, t.column, len, text);
           continue;
         }
@@ -138,6 +146,7 @@ std::vector<Token> lex(std::string_view src, DiagnosticSink& sink) {
           size_t n = 1;
           while (start + n < src.size() && (static_cast<unsigned char>(src[start + n]) & 0xC0) == 0x80) ++n;
           i = start + n;
+          markBad();
           sink.report(DiagId::invalidCharacter, t.line, t.column, 1, std::string(src.substr(start, n)));
           continue;
         }

@@ -31,6 +31,8 @@ inline constexpr size_t kMaxNameLength = 64;
 
 // Lexes the whole text. Binary input (NUL byte, invalid UTF-8) is one E0102 and an empty
 // token list: a garbage file gets one error, not thousands. Always ends with an End token.
-std::vector<Token> lex(std::string_view source, DiagnosticSink& sink);
+// Lines that had a lexical error are added to `badLines` (when given): the checker skips the
+// settings on them, because a dropped token would otherwise cause a follow-on error.
+std::vector<Token> lex(std::string_view source, DiagnosticSink& sink, std::vector<int>* badLines = nullptr);
 
 }  // namespace shadowc::dsl

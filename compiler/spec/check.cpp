@@ -86,6 +86,7 @@ class Checker {
         continue;
       }
       seen[group] = &s;
+      if (std::binary_search(f_.badLines.begin(), f_.badLines.end(), s.line)) continue;  // already reported
       if (!s.hasValue && s.keyword != "depth") {
         sink_.report(DiagId::missingValue, s.line, s.column, static_cast<int>(s.keyword.size()), s.keyword);
         continue;
@@ -96,7 +97,7 @@ class Checker {
     normalize();
     // A setting that failed to read keeps its default, so combination checks would report
     // follow-on errors about settings the user did write: check combinations on clean input only.
-    if (sink_.errors() == errorsBefore_) combinations();
+    if (sink_.errors() == errorsBefore_ && f_.badLines.empty()) combinations();
     return spec_;
   }
 

@@ -1,6 +1,8 @@
 // loadFilterSource / loadFilterFile: the front end's driver (lex -> parse -> check).
 #include "spec/load_filter.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -14,6 +16,25 @@ namespace {
 // Filter descriptions are a few hundred bytes; 1 MiB bounds the work on hostile input
 // (the lexer is linear anyway, but nobody wants a megabyte of carets).
 constexpr size_t kMaxSourceBytes = 1 << 20;
+
+// The parser reports before the checker runs; readers expect file order (as glslc prints).
+// A note stays right after the diagnostic it belongs to; file-level ones (line 0) go last.
+void sortByLocation(std::vector<Diagnostic>& diagnostics) {
+  std::vector<std::vector<Diagnostic>> groups;
+  for (Diagnostic& d : diagnostics) {
+    if (d.severity == Severity::Note && !groups.empty()) groups.back().push_back(std::move(d));
+    else groups.push_back({std::move(d)});
+  }
+  std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) {
+    auto key = [](const Diagnostic& d) {
+      return std::pair(d.location.line == 0 ? INT32_MAX : d.location.line, d.location.column);
+    };
+    return key(a.front()) < key(b.front());
+  });
+  diagnostics.clear();
+  for (auto& g : groups)
+    for (Diagnostic& d : g) diagnostics.push_back(std::move(d));
+}
 }  // namespace
 
 int LoadResult::errorCount() const {
@@ -35,11 +56,14 @@ LoadResult loadFilterSource(const std::string& text, const std::string& fileName
     return result;
   }
   result.source = text;
-  const std::vector<dsl::Token> tokens = dsl::lex(result.source, sink);
+  std::vector<int> badLines;
+  const std::vector<dsl::Token> tokens = dsl::lex(result.source, sink, &badLines);
   if (sink.stopped()) return result;
-  const dsl::File file = dsl::parse(tokens, sink);
+  dsl::File file = dsl::parse(tokens, sink);
+  file.filter.badLines = std::move(badLines);
   if (!file.hasFilter || sink.stopped()) return result;
   FilterSpec spec = spec::check(file.filter, sink);
+  sortByLocation(result.diagnostics);
   if (result.errorCount() == 0) result.spec = std::move(spec);
   return result;
 }

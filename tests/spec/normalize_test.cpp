@@ -1,0 +1,141 @@
+// Normalization: every default explicit, defaults that depend on other settings, splits,
+// precision limits (both sides of each boundary), and the JSON's fixed key order.
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "spec/load_filter.h"
+#include "spec/precision.h"
+#include "support/test_support.h"
+
+using namespace shadowc;
+
+namespace {
+FilterSpec load(const std::string& body) {
+  const LoadResult r = loadFilterSource("filter t {\n" + body + "\n}\n", "t.shadow");
+  EXPECT_EQ(r.errorCount(), 0) << formatDiagnostics(r);
+  return r.spec.value_or(FilterSpec{});
+}
+std::vector<std::string> codes(const std::string& body, bool werror = false) {
+  LoadOptions o;
+  o.warningsAsErrors = werror;
+  const LoadResult r = loadFilterSource("filter t {\n" + body + "\n}\n", "t.shadow", o);
+  std::vector<std::string> out;
+  for (const Diagnostic& d : r.diagnostics) out.push_back(d.code);
+  return out;
+}
+using Codes = std::vector<std::string>;
+}  // namespace
+
+TEST(Normalize, EmptyFilterIsAHardShadow) {
+  const FilterSpec s = load("");
+  EXPECT_EQ(s.representation, Representation::Depth);
+  EXPECT_EQ(s.light.shape, LightShape::Rect);
+  EXPECT_TRUE(s.light.sizeFromScene);
+  EXPECT_EQ(s.kernel.size, KernelSize::Fixed);
+  EXPECT_EQ(s.kernel.fixedTexels, 1);
+  EXPECT_EQ(s.sampling.pattern, PcfPattern::Grid);
+  EXPECT_EQ(s.sampling.gridN, 1);
+  EXPECT_EQ(s.moments.splits, (std::vector<double>{0.0, 1.0}));
+  EXPECT_EQ(s.mapSize, 2048);
+}
+
+TEST(Normalize, KernelAndSamplingDefaultsFollowTheBlocker) {
+  const FilterSpec pcss = load("blocker search(16)");
+  EXPECT_EQ(pcss.kernel.size, KernelSize::Penumbra);
+  EXPECT_EQ(pcss.sampling.pattern, PcfPattern::Poisson);
+  EXPECT_EQ(pcss.sampling.rotation, Rotation::Stable);
+  const FilterSpec pcf = load("sampling grid(4x4)");
+  EXPECT_EQ(pcf.kernel.fixedTexels, 5);  // 4 rounded up to odd
+  const FilterSpec fixed = load("kernel fixed(7)");
+  EXPECT_EQ(fixed.sampling.gridN, 7);
+}
+
+TEST(Normalize, OrderOfSettingsDoesNotMatter) {
+  const std::string a = "moments linear\nstorage sat(int32)\nblocker moments\nkernel quadtree(3)\nlight disk(0.1)";
+  const std::string b = "light disk(0.1)\nkernel quadtree(3)\nblocker moments\nstorage sat(int32)\nmoments linear";
+  EXPECT_EQ(specToJson(load(a)).dump(), specToJson(load(b)).dump());
+}
+
+TEST(Normalize, UniformSplitsAreComputed) {
+  const FilterSpec s = load("moments linear(layers: 4)");
+  EXPECT_EQ(s.moments.splits, (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0}));
+  const FilterSpec l = load("moments linear(layers: 3, split: lloyd)");
+  EXPECT_EQ(l.moments.split, SplitPlacement::Lloyd);
+  ASSERT_EQ(l.moments.splits.size(), 4u);  // initial guess, refined by the planner
+  EXPECT_DOUBLE_EQ(l.moments.splits[1], 1.0 / 3.0);
+  const FilterSpec e = load("moments linear(layers: 2, split: explicit(0, 0.1, 1))");
+  EXPECT_EQ(e.moments.splits, (std::vector<double>{0.0, 0.1, 1.0}));
+}
+
+TEST(Normalize, ExponentDefaultsFollowStoragePrecision) {
+  EXPECT_DOUBLE_EQ(load("moments evsm2").moments.positiveExponent, 40.0);
+  EXPECT_DOUBLE_EQ(load("moments evsm2\nstorage fp16").moments.positiveExponent, 5.5);
+  EXPECT_DOUBLE_EQ(load("moments linear\nstorage fp16").moments.minVariance, 5e-4);
+  EXPECT_DOUBLE_EQ(load("moments linear").moments.minVariance, 1e-5);
+}
+
+TEST(Precision, LimitsMatchFacts) {
+  EXPECT_NEAR(spec::warpExponentLimit({StorageFormat::Fp16, SatKind::None}, 2048).maxExponent, 5.545, 1e-3);
+  EXPECT_DOUBLE_EQ(spec::warpExponentLimit({StorageFormat::Fp32, SatKind::None}, 2048).maxExponent, 42.0);
+  // An fp32 SAT of W^2 texels: 42 - ln(W^2)/2.
+  EXPECT_NEAR(spec::warpExponentLimit({StorageFormat::Fp32, SatKind::Fp32Centered}, 4096).maxExponent,
+              42.0 - std::log(4096.0), 1e-9);
+}
+
+TEST(Precision, BothSidesOfTheFp16Boundary) {
+  EXPECT_EQ(codes("moments evsm2(exponent: 5.5)\nstorage fp16"), Codes{});
+  EXPECT_EQ(codes("moments evsm2(exponent: 5.6)\nstorage fp16"), Codes{"E0404"});
+}
+
+TEST(Precision, BothSidesOfTheSatBoundaryDependOnMapSize) {
+  const std::string sat = "\nstorage sat(fp32_centered)\nblocker moments\nkernel uniform(4)";
+  EXPECT_EQ(codes("moments exp(exponent: 34)" + sat), Codes{});                       // 2048: limit 34.38
+  EXPECT_EQ(codes("moments exp(exponent: 34)\nmap_size 4096" + sat), Codes{"E0404"});  // 4096: 33.68
+  EXPECT_EQ(codes("moments exp(exponent: 35)" + sat), Codes{"E0404"});
+}
+
+TEST(Combinations, Int32SatBoxLimit) {
+  const std::string base = "moments linear\nstorage sat(int32)\nblocker moments\n";
+  EXPECT_EQ(codes(base + "kernel uniform(4, max: 255)"), Codes{});
+  EXPECT_EQ(codes(base + "kernel uniform(4, max: 256)"), Codes{"E0412"});
+}
+
+TEST(Combinations, WerrorTurnsWarningsIntoErrors) {
+  const std::string body = "moments linear\nstorage sat(int32)\nblocker moments\nkernel quadtree(0)";
+  LoadOptions o;
+  const LoadResult warn = loadFilterSource("filter t {\n" + body + "\n}\n", "t");
+  EXPECT_EQ(warn.errorCount(), 0);
+  EXPECT_EQ(warn.warningCount(), 1);
+  EXPECT_TRUE(warn.spec);
+  o.warningsAsErrors = true;
+  const LoadResult err = loadFilterSource("filter t {\n" + body + "\n}\n", "t", o);
+  EXPECT_EQ(err.errorCount(), 1);
+  EXPECT_EQ(err.diagnostics[0].code, "W0502");  // the code stays; the severity changes
+  EXPECT_FALSE(err.spec);
+}
+
+TEST(SpecJson, FixedKeyOrderAndEveryField) {
+  const nlohmann::ordered_json j = specToJson(load("moments linear(layers: 2)\nstorage sat(int32)\nblocker moments"
+                                                   "\nkernel quadtree(3)"));
+  std::vector<std::string> keys;
+  for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
+  const std::vector<std::string> expected = {"name",    "light",  "representation", "moments", "storage",
+                                             "prefilter", "blocker", "kernel",       "sampling", "bias",
+                                             "fallback", "contact", "early_out_minmax", "map_size"};
+  EXPECT_EQ(keys, expected);
+  EXPECT_EQ(j["moments"].size(), 10u);
+  EXPECT_EQ(j["kernel"].size(), 8u);
+  EXPECT_EQ(j["blocker"].size(), 6u);
+  EXPECT_EQ(j["moments"]["splits"].dump(), "[0.0,0.5,1.0]");
+  EXPECT_EQ(j["kernel"]["subdivision"], "quadtree");
+  EXPECT_EQ(j["storage"]["sat"], "int32");
+}
+
+TEST(SpecJson, GoldenForTheDesignExample) {
+  const LoadResult r = loadFilterFile(std::string(SHADOWC_SOURCE_DIR) + "/samples/filters/vssm_adaptive.shadow");
+  ASSERT_TRUE(r.spec);
+  const std::string golden = std::string(SHADOWC_SOURCE_DIR) + "/tests/spec/golden/vssm_adaptive.spec.json";
+  const std::string diff = test::compareGolden(golden, specToJson(*r.spec).dump(2) + "\n");
+  EXPECT_TRUE(diff.empty()) << diff;
+}
