@@ -35,16 +35,20 @@ void loadVulkanLoader() {
 #define SHADOWC_VK_LOAD(name) name = reinterpret_cast<PFN_##name>(vkGetInstanceProcAddr(nullptr, #name));
     SHADOWC_VK_GLOBAL_FUNCTIONS(SHADOWC_VK_LOAD)
 #undef SHADOWC_VK_LOAD
-    if (!vkCreateInstance || !vkEnumerateInstanceVersion) failure = "the Vulkan loader is older than Vulkan 1.1";
+    if (!vkCreateInstance || !vkEnumerateInstanceVersion) {
+      failure = "the Vulkan loader is older than Vulkan 1.1";
+      return;
+    }
+    std::string missing;
+#define SHADOWC_VK_LOAD(name)                                  \
+  name = reinterpret_cast<PFN_##name>(dlsym(lib, #name));      \
+  if (!name) missing += std::string(missing.empty() ? "" : ", ") + #name;
+    SHADOWC_VK_INSTANCE_FUNCTIONS(SHADOWC_VK_LOAD)
+    SHADOWC_VK_DEVICE_FUNCTIONS(SHADOWC_VK_LOAD)
+#undef SHADOWC_VK_LOAD
+    if (!missing.empty()) failure = "the Vulkan loader does not export " + missing;
   });
   if (!failure.empty()) throw VulkanError(failure);
-}
-
-void loadInstanceFunctions(VkInstance instance) {
-#define SHADOWC_VK_LOAD(name) name = reinterpret_cast<PFN_##name>(vkGetInstanceProcAddr(instance, #name));
-  SHADOWC_VK_INSTANCE_FUNCTIONS(SHADOWC_VK_LOAD)
-  SHADOWC_VK_DEVICE_FUNCTIONS(SHADOWC_VK_LOAD)
-#undef SHADOWC_VK_LOAD
 }
 
 const char* vkResultName(VkResult r) {

@@ -28,9 +28,7 @@
   X(vkGetPhysicalDeviceFormatProperties)       \
   X(vkGetPhysicalDeviceFeatures)               \
   X(vkEnumerateDeviceExtensionProperties)      \
-  X(vkCreateDevice)                            \
-  X(vkCreateDebugUtilsMessengerEXT)            \
-  X(vkDestroyDebugUtilsMessengerEXT)
+  X(vkCreateDevice)
 
 #define SHADOWC_VK_DEVICE_FUNCTIONS(X) \
   X(vkDestroyDevice)                   \
@@ -113,13 +111,12 @@ SHADOWC_VK_INSTANCE_FUNCTIONS(SHADOWC_VK_DECLARE)
 SHADOWC_VK_DEVICE_FUNCTIONS(SHADOWC_VK_DECLARE)
 #undef SHADOWC_VK_DECLARE
 
-// dlopen("libvulkan.so.1") once and resolve the global entry points. Throws VulkanError
-// ("no Vulkan loader ...") when the library is absent.
+// dlopen("libvulkan.so.1") once and resolve every core entry point above from the loader's
+// exported trampolines, which dispatch on the handle: one table is valid for every instance
+// and device of the process. (Extension functions such as debug utils are per instance:
+// VulkanContext resolves those itself.) Throws VulkanError ("no Vulkan loader ...") when the
+// library is absent.
 void loadVulkanLoader();
-// Resolve instance- and device-level entry points through vkGetInstanceProcAddr (the
-// loader's trampolines dispatch device calls to the right ICD, so one table serves every
-// context of the process).
-void loadInstanceFunctions(VkInstance instance);
 
 // "VK_ERROR_OUT_OF_DEVICE_MEMORY" etc.
 const char* vkResultName(VkResult r);

@@ -112,7 +112,6 @@ bool validationRequestedByEnvironment() {
 std::vector<PhysicalDeviceInfo> VulkanContext::listDevices() {
   loadVulkanLoader();
   VkInstance instance = createBareInstance();
-  loadInstanceFunctions(instance);
   std::vector<PhysicalDeviceInfo> out;
   try {
     out = enumerate(instance);
@@ -165,9 +164,15 @@ VulkanContext::VulkanContext(const VulkanOptions& options)
     checkVk(r, "vkCreateInstance");
   }
   try {
-    loadInstanceFunctions(instance_);
-    if (validation_)
-      checkVk(vkCreateDebugUtilsMessengerEXT(instance_, &messenger, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
+    if (validation_) {
+      // Extension entry points belong to this instance (not to the process-wide table).
+      auto create = reinterpret_cast<PFN_vkCreateDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(instance_, "vkCreateDebugUtilsMessengerEXT"));
+      destroyMessenger_ = reinterpret_cast<PFN_vkDestroyDebugUtilsMessengerEXT>(
+          vkGetInstanceProcAddr(instance_, "vkDestroyDebugUtilsMessengerEXT"));
+      if (!create || !destroyMessenger_) throw VulkanError("VK_EXT_debug_utils is not available");
+      checkVk(create(instance_, &messenger, nullptr, &messenger_), "vkCreateDebugUtilsMessengerEXT");
+    }
 
     const auto devices = enumerate(instance_);
     const uint32_t index = selectDevice(devices, options.device);
@@ -238,7 +243,7 @@ void VulkanContext::release() {
     if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
     vkDestroyDevice(device_, nullptr);
   }
-  if (messenger_) vkDestroyDebugUtilsMessengerEXT(instance_, messenger_, nullptr);
+  if (messenger_ && destroyMessenger_) destroyMessenger_(instance_, messenger_, nullptr);
   if (instance_) vkDestroyInstance(instance_, nullptr);
   device_ = VK_NULL_HANDLE;
   fence_ = VK_NULL_HANDLE;
