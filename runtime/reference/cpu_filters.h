@@ -49,7 +49,7 @@ DepthStats boxDepthStats(const ImageView& depth, Rect r);
 // --- Summed-area tables (vssm-yang2010 sec. 4; FACTS.md precision numbers) -----------------
 // Inclusive tables: S(x, y) = sum over x' <= x, y' <= y. Box sums use the four corners
 // S(x1,y1) - S(x0-1,y1) - S(x1,y0-1) + S(x0-1,y0-1), a corner with index -1 reading 0.
-struct SatU32 {  // int32 16.16 fixed point: uint(round(clamp(v, 0, 1) * 65536)), sums mod 2^32
+struct SatU32 {  // int32 16.16 fixed point: uint(roundEven(clamp(v, 0, 1) * 65536)), sums mod 2^32
   uint32_t width = 0, height = 0, channels = 1;
   std::vector<uint32_t> data;
 };

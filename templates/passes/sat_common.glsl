@@ -21,8 +21,8 @@
 #if SHADOWC_SAT_KIND == 1
 #define SHADOWC_SAT_VALUE uvec4
 #define SHADOWC_SAT_IMAGE uimage2DArray
-// Values outside [0,1] would wrap meaninglessly; the checker only allows warps in [0,1] here.
-uvec4 shadowc_satEncode(vec4 v) { return uvec4(round(clamp(v, 0.0, 1.0) * 65536.0)); }
+// Inputs are clamped (the checker allows only warps in [0,1]); roundEven because round() may go either way at .5.
+uvec4 shadowc_satEncode(vec4 v) { return uvec4(roundEven(clamp(v, 0.0, 1.0) * 65536.0)); }
 #elif SHADOWC_SAT_KIND == 2
 #define SHADOWC_SAT_VALUE vec4
 #define SHADOWC_SAT_IMAGE image2DArray

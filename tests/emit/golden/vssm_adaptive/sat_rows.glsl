@@ -2,7 +2,7 @@
 #extension GL_GOOGLE_include_directive : require
 #line 1 "passes/sat_common.glsl"
 #line 25
-uvec4 shadowc_satEncode(vec4 v){ return uvec4(round(clamp(v, 0.0, 1.0)* 65536.0));}
+uvec4 shadowc_satEncode(vec4 v){ return uvec4(roundEven(clamp(v, 0.0, 1.0)* 65536.0));}
 #line 15 "templates/passes/sat_rows.comp"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1)in;
