@@ -8,7 +8,7 @@ PKGS=(
   libxxhash-dev                                   # manifest content hash (XXH3-128)
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools   # loader, lavapipe, Khronos layers
   libglm-dev libfmt-dev nlohmann-json3-dev libcli11-dev libstb-dev          # math, format, JSON, CLI, PNG
-  libembree-dev libtbb-dev libassimp-dev                                    # ray-traced reference, meshes
+  libembree-dev libtbb-dev libassimp-dev zlib1g-dev              # reference, meshes (assimp links libz.so)
   libgtest-dev libgmock-dev libbenchmark-dev                                # tests and benchmarks
 )
 missing=()
