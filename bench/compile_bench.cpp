@@ -4,6 +4,8 @@
 //   (c) the same work as (a) done by running the glslangValidator, spirv-opt and spirv-val
 //       programs on the emitted GLSL files (std::system: allowed here, in the benchmark only).
 // Prints a markdown table and the ratio (c)/(a). Usage: compile_bench [N] [sample-substring].
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <chrono>
 #include <cstdlib>
@@ -11,8 +13,6 @@
 #include <fstream>
 #include <string>
 #include <vector>
-
-#include <fmt/core.h>
 
 #include "compiler/backend/spirv_backend.h"
 #include "compiler/emit/filter_emitter.h"
@@ -50,7 +50,9 @@ int main(int argc, char** argv) {
   const fs::path tmp = fs::temp_directory_path() / ("shadowc-compile-bench-" + std::to_string(::getpid()));
   const std::string recipe = recipeFlags();
 
-  fmt::print("| filter | shaders | in-process compile (ms) | full emitFilter (ms) | glslangValidator + spirv-opt + spirv-val (ms) | external / in-process |\n");
+  fmt::print(
+      "| filter | shaders | in-process compile (ms) | full emitFilter (ms) | glslangValidator + spirv-opt + spirv-val "
+      "(ms) | external / in-process |\n");
   fmt::print("|---|---:|---:|---:|---:|---:|\n");
   std::vector<double> ratios;
   double sumIn = 0, sumExt = 0, sumFull = 0;
@@ -87,7 +89,8 @@ int main(int argc, char** argv) {
         const std::string base = (dir / stem).string();
         const std::string cmd = "glslangValidator -S comp -V --target-env vulkan1.2 -o " + base + ".ext.spv " + base +
                                 ".glsl >/dev/null && spirv-opt --target-env=vulkan1.2" + recipe + " " + base +
-                                ".ext.spv -o " + base + ".opt.spv && spirv-val --target-env vulkan1.2 " + base + ".opt.spv";
+                                ".ext.spv -o " + base + ".opt.spv && spirv-val --target-env vulkan1.2 " + base +
+                                ".opt.spv";
         if (std::system(cmd.c_str()) != 0) {
           fmt::print(stderr, "external pipeline failed on {}\n", base);
           return 1;
@@ -105,8 +108,9 @@ int main(int argc, char** argv) {
   }
   fs::remove_all(tmp);
   if (ratios.empty()) return 1;
-  fmt::print("\n{} filters, {} runs each (medians). Totals: in-process compile {:.0f} ms, full emitFilter {:.0f} ms, "
-             "external programs {:.0f} ms; external/in-process: median {:.2f}×, total {:.2f}×\n",
-             ratios.size(), n, sumIn, sumFull, sumExt, median(ratios), sumExt / sumIn);
+  fmt::print(
+      "\n{} filters, {} runs each (medians). Totals: in-process compile {:.0f} ms, full emitFilter {:.0f} ms, "
+      "external programs {:.0f} ms; external/in-process: median {:.2f}×, total {:.2f}×\n",
+      ratios.size(), n, sumIn, sumFull, sumExt, median(ratios), sumExt / sumIn);
   return 0;
 }

@@ -1,5 +1,7 @@
 // `shadowc compile FILE.shadow -o DIR`: front end -> planner -> emitter -> atomic write.
 // glslc-style flags (STYLE.md): -O / -O0, -M / -MD, -Werror; see docs/cli.md.
+#include <fmt/core.h>
+
 #include <cstdio>
 #include <filesystem>
 #include <set>
@@ -7,13 +9,11 @@
 #include <string>
 #include <vector>
 
-#include <fmt/core.h>
-
+#include "backend/spirv_backend.h"
 #include "cli/commands.h"
 #include "emit/depfile.h"
 #include "emit/filter_emitter.h"
 #include "emit/output_writer.h"
-#include "backend/spirv_backend.h"
 #include "plan/planner.h"
 #include "spec/load_filter.h"
 
@@ -59,12 +59,18 @@ std::vector<std::string> plannedOutputs(const FilterSpec& spec) {
 int run(CompileArgs& a, CLI::App& sub) {
   // CLI11 2.1 has no multi-letter single-dash options: glslc's -O0, -MD and -Werror arrive here.
   for (const std::string& extra : sub.remaining()) {
-    if (extra == "-O") a.optimize = true;
-    else if (extra == "-O0") a.optimize = false;
-    else if (extra == "-M") a.depsToStdout = true;
-    else if (extra == "-MD") a.depsFile = true;
-    else if (extra == "-Werror") a.werror = true;
-    else return error("unknown argument '" + extra + "' (see shadowc compile --help)");
+    if (extra == "-O")
+      a.optimize = true;
+    else if (extra == "-O0")
+      a.optimize = false;
+    else if (extra == "-M")
+      a.depsToStdout = true;
+    else if (extra == "-MD")
+      a.depsFile = true;
+    else if (extra == "-Werror")
+      a.werror = true;
+    else
+      return error("unknown argument '" + extra + "' (see shadowc compile --help)");
   }
   if (a.printRecipe) {
     for (const auto& pass : optimizationRecipe()) fmt::print("{}\n", pass);

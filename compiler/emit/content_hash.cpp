@@ -1,9 +1,9 @@
 #include "emit/content_hash.h"
 
-#include <algorithm>
-
 #include <fmt/format.h>
 #include <xxhash.h>
+
+#include <algorithm>
 
 namespace shadowc {
 

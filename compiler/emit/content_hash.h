@@ -11,7 +11,7 @@
 namespace shadowc {
 
 struct EmittedFile {
-  std::string name;   // relative to the output directory
+  std::string name;  // relative to the output directory
   std::string bytes;
 };
 

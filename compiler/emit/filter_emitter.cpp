@@ -26,8 +26,8 @@ bool emitLookup(const FilterSpec& spec, const LookupSpecialization& lookup, std:
                               kSpecializeMarker + "\n#include \"" + kLookupEntry + "\"\n";
   std::string preprocessed;
   const std::string name = std::string("templates/") + kLookupEntry;
-  const SpirvResult pp =
-      preprocessGlsl(insertSpecialization(wrapper, lookup), ShaderStage::Compute, name, templateIncludes(), preprocessed);
+  const SpirvResult pp = preprocessGlsl(insertSpecialization(wrapper, lookup), ShaderStage::Compute, name,
+                                        templateIncludes(), preprocessed);
   log += pp.log;
   if (!pp.ok) return false;
   std::string body;

@@ -20,7 +20,7 @@ struct EmitOptions {
 
 struct FilterEmitResult {
   bool ok = false;
-  std::string log;                 // compiler diagnostics when !ok (and warnings)
+  std::string log;  // compiler diagnostics when !ok (and warnings)
   Manifest manifest;
   std::vector<EmittedFile> files;  // sorted by name: <stem>.glsl/.spv, <filter>_lookup.glsl, manifest.json
 };

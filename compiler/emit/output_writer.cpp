@@ -1,10 +1,10 @@
 #include "emit/output_writer.h"
 
+#include <unistd.h>
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
-
-#include <unistd.h>
 
 namespace shadowc {
 

@@ -16,14 +16,14 @@ namespace shadowc {
 
 struct EmittedShader {
   bool ok = false;
-  std::string log;                 // diagnostics, "templates/<path>:line: ..." form
-  std::string glsl;                // the emitted (preprocessed) GLSL
+  std::string log;   // diagnostics, "templates/<path>:line: ..." form
+  std::string glsl;  // the emitted (preprocessed) GLSL
   std::vector<uint32_t> spirv;
   std::array<uint32_t, 3> localSize{1, 1, 1};  // read back from the emitted layout(local_size_*)
 };
 
 struct ShaderEmitOptions {
-  bool optimize = true;          // -O recipe; false = -O0
+  bool optimize = true;           // -O recipe; false = -O0
   bool warningsAsErrors = false;  // a preprocessor/compiler warning fails the shader
 };
 

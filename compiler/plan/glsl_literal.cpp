@@ -1,8 +1,8 @@
 #include "plan/glsl_literal.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace shadowc {
 

@@ -11,11 +11,16 @@ ImageFormat bySize(int channels, ImageFormat r, ImageFormat rg, ImageFormat rgba
 
 int momentChannels(Warp warp) {
   switch (warp) {
-    case Warp::Linear: return 2;
-    case Warp::Exp: return 1;
-    case Warp::Evsm2: return 2;
-    case Warp::Evsm4: return 4;
-    case Warp::PowerCdf: return 4;
+    case Warp::Linear:
+      return 2;
+    case Warp::Exp:
+      return 1;
+    case Warp::Evsm2:
+      return 2;
+    case Warp::Evsm4:
+      return 4;
+    case Warp::PowerCdf:
+      return 4;
   }
   return 4;
 }
@@ -25,8 +30,10 @@ ImageFormat momentsFormat(const FilterSpec& spec) {
   // A SAT re-encodes the moments anyway; its input keeps full precision.
   const StorageFormat f = spec.storage.sat != SatKind::None ? StorageFormat::Fp32 : spec.storage.format;
   switch (f) {
-    case StorageFormat::Fp32: return bySize(c, ImageFormat::R32F, ImageFormat::RG32F, ImageFormat::RGBA32F);
-    case StorageFormat::Fp16: return bySize(c, ImageFormat::R16F, ImageFormat::RG16F, ImageFormat::RGBA16F);
+    case StorageFormat::Fp32:
+      return bySize(c, ImageFormat::R32F, ImageFormat::RG32F, ImageFormat::RGBA32F);
+    case StorageFormat::Fp16:
+      return bySize(c, ImageFormat::R16F, ImageFormat::RG16F, ImageFormat::RGBA16F);
     case StorageFormat::Unorm16:
       return bySize(c, ImageFormat::R16Unorm, ImageFormat::RG16Unorm, ImageFormat::RGBA16Unorm);
   }
@@ -35,7 +42,8 @@ ImageFormat momentsFormat(const FilterSpec& spec) {
 
 ImageFormat satFormat(const FilterSpec& spec) {
   const int c = momentChannels(spec.moments.warp);
-  if (spec.storage.sat == SatKind::Int32) return bySize(c, ImageFormat::R32UI, ImageFormat::RG32UI, ImageFormat::RGBA32UI);
+  if (spec.storage.sat == SatKind::Int32)
+    return bySize(c, ImageFormat::R32UI, ImageFormat::RG32UI, ImageFormat::RGBA32UI);
   return bySize(c, ImageFormat::R32F, ImageFormat::RG32F, ImageFormat::RGBA32F);
 }
 

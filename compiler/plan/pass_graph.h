@@ -14,10 +14,10 @@
 namespace shadowc {
 
 struct PassSource {
-  std::string templatePath;  // relative to templates/, e.g. "passes/sat_rows.comp"
-  std::string stem;          // output file stem: <stem>.glsl, <stem>.spv
+  std::string templatePath;                                  // relative to templates/, e.g. "passes/sat_rows.comp"
+  std::string stem;                                          // output file stem: <stem>.glsl, <stem>.spv
   std::vector<std::pair<std::string, std::string>> defines;  // emitted as `#define name value`
-  bool lookup = false;       // true for the shade pass: defines come from specializeLookup()
+  bool lookup = false;  // true for the shade pass: defines come from specializeLookup()
 };
 
 struct PassGraph {

@@ -17,21 +17,30 @@ using Defines = std::vector<std::pair<std::string, std::string>>;
 
 int warpCode(Warp w) {  // moments_warp.glsl SHADOWC_WARP
   switch (w) {
-    case Warp::Linear: return 0;
-    case Warp::Exp: return 1;
-    case Warp::Evsm2: return 2;
-    case Warp::Evsm4: return 3;
-    case Warp::PowerCdf: return 4;
+    case Warp::Linear:
+      return 0;
+    case Warp::Exp:
+      return 1;
+    case Warp::Evsm2:
+      return 2;
+    case Warp::Evsm4:
+      return 3;
+    case Warp::PowerCdf:
+      return 4;
   }
   return 0;
 }
 
 int satCode(SatKind k) {  // sat_common.glsl SHADOWC_SAT_KIND
   switch (k) {
-    case SatKind::Int32: return 1;
-    case SatKind::Fp32Centered: return 2;
-    case SatKind::Fp32Naive: return 3;
-    case SatKind::None: break;
+    case SatKind::Int32:
+      return 1;
+    case SatKind::Fp32Centered:
+      return 2;
+    case SatKind::Fp32Naive:
+      return 3;
+    case SatKind::None:
+      break;
   }
   return 0;
 }
@@ -144,7 +153,8 @@ class Planner {
     while (shift > 0 && (64 >> shift) < layers + 1) --shift;
     addImage({"splits", ImageFormat::R32F, {SizeDomain::Map, shift}, 1, 1, ImageRole::Internal, false});
     Pass& p = addPass("lloyd", "lloyd", {256, 1, 1}, {{SizeDomain::Map, 16}, DispatchMode::Texels},
-                      {"passes/lloyd.comp", "lloyd",
+                      {"passes/lloyd.comp",
+                       "lloyd",
                        {{"SHADOWC_LAYERS", std::to_string(layers)},
                         {"SHADOWC_LLOYD_ITERATIONS", std::to_string(std::max(1, spec_.moments.lloydIterations))}},
                        false});
@@ -171,8 +181,7 @@ class Planner {
                        {"passes/minmax.comp", "minmax0", {{"SHADOWC_MINMAX_LEVEL0", "1"}}, false});
     p0.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "minmax", Access::StorageWrite, 0}};
     for (int k = 1; k < levels; ++k) {
-      Pass& p = addPass("minmax" + std::to_string(k), "minmax", {8, 8, 1},
-                        {{SizeDomain::Map, k}, DispatchMode::Texels},
+      Pass& p = addPass("minmax" + std::to_string(k), "minmax", {8, 8, 1}, {{SizeDomain::Map, k}, DispatchMode::Texels},
                         {"passes/minmax.comp", "minmax", {{"SHADOWC_MINMAX_LEVEL0", "0"}}, false});
       p.bindings = {{0, "minmax", Access::StorageRead, k - 1}, {1, "minmax", Access::StorageWrite, k}};
     }

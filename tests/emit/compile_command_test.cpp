@@ -1,10 +1,9 @@
 // `shadowc compile` end to end through the executable: flags, depfiles, errors, atomicity.
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 
 #include <cstdio>
 #include <fstream>
-
-#include <gtest/gtest.h>
 
 #include "emit/emit_support.h"
 

@@ -1,12 +1,12 @@
 // Shared by the emit tests: the sample filter files, and emitting a file or spec into a dir.
 #pragma once
 
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <map>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "emit/filter_emitter.h"
 #include "emit/output_writer.h"
@@ -36,14 +36,16 @@ inline FilterSpec loadSample(const std::string& name) {
 // name -> bytes of every file in a directory.
 inline std::map<std::string, std::string> readDir(const std::filesystem::path& dir) {
   std::map<std::string, std::string> files;
-  for (const auto& e : std::filesystem::directory_iterator(dir)) files[e.path().filename().string()] = readFile(e.path());
+  for (const auto& e : std::filesystem::directory_iterator(dir))
+    files[e.path().filename().string()] = readFile(e.path());
   return files;
 }
 
 inline std::vector<uint32_t> spirvWords(const std::string& bytes) {
   std::vector<uint32_t> words(bytes.size() / 4);
   for (size_t i = 0; i < words.size(); ++i)
-    for (int b = 0; b < 4; ++b) words[i] |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[4 * i + b])) << (8 * b);
+    for (int b = 0; b < 4; ++b)
+      words[i] |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[4 * i + b])) << (8 * b);
   return words;
 }
 

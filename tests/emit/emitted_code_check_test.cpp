@@ -40,8 +40,8 @@ TEST(EmittedCode, DepthPcfShadeHasNoMomentsOrSatCode) {
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
   ASSERT_FALSE(shade.empty());
-  for (const char* absent : {"usampler2DArray", "sampler2DArray", "summedArea", "chebyshev", "binding = 5",
-                             "binding = 6", "binding = 7"})
+  for (const char* absent :
+       {"usampler2DArray", "sampler2DArray", "summedArea", "chebyshev", "binding = 5", "binding = 6", "binding = 7"})
     EXPECT_EQ(shade.find(absent), std::string::npos) << "PCF shade must not contain '" << absent << "'";
   EXPECT_NE(shade.find("binding = 4"), std::string::npos);  // shadow_depth
 }

@@ -1,9 +1,9 @@
 // Golden files of the emitted GLSL (glslang's Test/baseResults habit): a change to emitted
 // code is a reviewed diff. Update after review with SHADOWC_UPDATE_GOLDEN=1. Goldens live in
 // tests/emit/golden/<filter>/<stem>.glsl.
-#include <fstream>
-
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "emit/emit_support.h"
 #include "plan/test_specs.h"

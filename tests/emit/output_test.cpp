@@ -1,7 +1,7 @@
 // Output side of the emitter: atomic writes, the content hash, make dependency rules.
-#include <fstream>
-
 #include <gtest/gtest.h>
+
+#include <fstream>
 
 #include "emit/content_hash.h"
 #include "emit/depfile.h"

@@ -1,8 +1,8 @@
 // Every prefilter pass of every technique family compiles from its template, at -O and -O0,
 // to SPIR-V that passes spirv-val; the emitted GLSL is the preprocessed, folded text.
-#include <string>
-
 #include <gtest/gtest.h>
+
+#include <string>
 
 #include "emit/shader_emitter.h"
 #include "emit/template_includes.h"
@@ -65,8 +65,8 @@ TEST(PrefilterPasses, LocalSizeIsReadBackFromTheEmittedShader) {
     if (src.stem != "sat_rows" && src.stem != "moments") continue;
     const EmittedShader sh = emitComputeShader(src.templatePath, asSpecialization(src), {});
     ASSERT_TRUE(sh.ok) << sh.log;
-    const std::array<uint32_t, 3> expected = src.stem == "sat_rows" ? std::array<uint32_t, 3>{64, 1, 1}
-                                                                     : std::array<uint32_t, 3>{8, 8, 1};
+    const std::array<uint32_t, 3> expected =
+        src.stem == "sat_rows" ? std::array<uint32_t, 3>{64, 1, 1} : std::array<uint32_t, 3>{8, 8, 1};
     EXPECT_EQ(sh.localSize, expected) << src.stem;
   }
 }

@@ -23,7 +23,8 @@ Manifest planned(const FilterSpec& spec) {
 TEST(ManifestJson, RoundTripIsExactForEveryTechniqueFamily) {
   FilterSpec lloyd = test::layeredEvsmSpec();
   lloyd.moments.split = SplitPlacement::Lloyd;
-  for (const FilterSpec& spec : {test::pcfSpec(), test::vssmInt32Spec(), test::layeredEvsmSpec(), test::blurMipSpec(), lloyd}) {
+  for (const FilterSpec& spec :
+       {test::pcfSpec(), test::vssmInt32Spec(), test::layeredEvsmSpec(), test::blurMipSpec(), lloyd}) {
     const nlohmann::ordered_json j = toJson(planned(spec));
     const nlohmann::ordered_json back = toJson(manifestFromJson(nlohmann::json::parse(j.dump())));
     EXPECT_EQ(j.dump(2), back.dump(2)) << spec.name;

@@ -1,10 +1,10 @@
 #include "plan/planner.h"
 
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <string>
 #include <vector>
-
-#include <gtest/gtest.h>
 
 #include "embed/embedded_file.h"
 #include "plan/test_specs.h"
@@ -102,8 +102,8 @@ TEST(Planner, BlurAndMipsPlanSeparablePassesAndOnePassPerLevel) {
   const FilterSpec spec = test::blurMipSpec();
   const PassGraph g = planPasses(spec);
   ASSERT_EQ(pyramidLevels(spec), 6);  // ceil(log2 32) + 1
-  EXPECT_EQ(passNames(g), (std::vector<std::string>{"moments", "blur_h", "blur_v", "mip1", "mip2", "mip3", "mip4",
-                                                    "mip5", "shade"}));
+  EXPECT_EQ(passNames(g),
+            (std::vector<std::string>{"moments", "blur_h", "blur_v", "mip1", "mip2", "mip3", "mip4", "mip5", "shade"}));
   EXPECT_EQ(image(g, "moments")->mipLevels, 6);
   EXPECT_EQ(image(g, "moments")->format, ImageFormat::RGBA32F);  // power_cdf: 3 channels stored as 4
   EXPECT_EQ(pass(g, "blur_h").bindings.at(1).image, "moments_tmp");
@@ -121,7 +121,8 @@ TEST(Planner, UnormStorageUsesUnormFormats) {
 }
 
 TEST(Planner, EveryPassSourceIsAnEmbeddedTemplateAndEveryBindingAnImage) {
-  for (const FilterSpec& spec : {test::pcfSpec(), test::vssmInt32Spec(), test::layeredEvsmSpec(), test::blurMipSpec()}) {
+  for (const FilterSpec& spec :
+       {test::pcfSpec(), test::vssmInt32Spec(), test::layeredEvsmSpec(), test::blurMipSpec()}) {
     const PassGraph g = planPasses(spec);
     ASSERT_EQ(g.sources.size(), g.manifest.passes.size());
     for (const auto& s : g.sources) EXPECT_FALSE(templates::find(s.templatePath).empty()) << s.templatePath;
