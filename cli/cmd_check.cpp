@@ -1,12 +1,12 @@
 // shadowc check FILE...: runs the front end (lex, parse, check) and prints diagnostics in glslc
 // form. Exit 0 when every file is clean, 1 when any has an error (warnings count with -Werror),
 // 2 on usage errors (CLI11). --print-spec prints each clean file's normalized spec as JSON.
+#include <fmt/core.h>
+
 #include <cstdio>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <fmt/core.h>
 
 #include "cli/commands.h"
 #include "spec/load_filter.h"

@@ -14,16 +14,16 @@ struct Value {
   enum class Kind { Name, Number, Size };
   Kind kind = Kind::Name;
   int line = 0, column = 0, length = 1;
-  std::string text;        // as written (name, number or size)
-  double number = 0;       // Number
-  bool integer = false;    // Number written without '.' or exponent
+  std::string text;           // as written (name, number or size)
+  double number = 0;          // Number
+  bool integer = false;       // Number written without '.' or exponent
   int width = 0, height = 0;  // Size
   bool hasArguments = false;  // Name followed by '(' ... ')'
   std::vector<Argument> arguments;
 };
 
 struct Argument {
-  std::string name;  // empty for a positional argument
+  std::string name;          // empty for a positional argument
   int line = 0, column = 0;  // of the name (or of the value when positional)
   Value value;
 };

@@ -31,8 +31,8 @@ void DiagnosticSink::emit(DiagId id, int line, int column, int length, std::stri
     return;
   }
   if (severity == Severity::Error) ++errors_;
-  out_.push_back(
-      Diagnostic{severity, info.code, SourceLocation{file_, line, column}, std::max(length, 1), std::move(message), ""});
+  out_.push_back(Diagnostic{severity, info.code, SourceLocation{file_, line, column}, std::max(length, 1),
+                            std::move(message), ""});
   lastKept_ = true;
 }
 
@@ -72,9 +72,12 @@ namespace shadowc {
 namespace {
 const char* severityName(Severity s) {
   switch (s) {
-    case Severity::Error: return "error";
-    case Severity::Warning: return "warning";
-    case Severity::Note: return "note";
+    case Severity::Error:
+      return "error";
+    case Severity::Warning:
+      return "warning";
+    case Severity::Note:
+      return "note";
   }
   return "error";
 }

@@ -3,11 +3,11 @@
 // formatter. Tests assert on codes (Diagnostic::code), never on wording.
 #pragma once
 
+#include <fmt/format.h>
+
 #include <string>
 #include <string_view>
 #include <vector>
-
-#include <fmt/format.h>
 
 #include "spec/load_filter.h"
 

@@ -16,13 +16,20 @@ size_t firstNonText(std::string_view s, const char** why) {
   for (size_t i = 0; i < s.size();) {
     const auto c = static_cast<unsigned char>(s[i]);
     if (c == 0) return *why = "NUL byte", i;
-    if (c < 0x80) { ++i; continue; }
+    if (c < 0x80) {
+      ++i;
+      continue;
+    }
     int extra = 0;
     unsigned minCode = 0;
-    if ((c & 0xE0) == 0xC0) extra = 1, minCode = 0x80;
-    else if ((c & 0xF0) == 0xE0) extra = 2, minCode = 0x800;
-    else if ((c & 0xF8) == 0xF0) extra = 3, minCode = 0x10000;
-    else return *why = "invalid UTF-8", i;
+    if ((c & 0xE0) == 0xC0)
+      extra = 1, minCode = 0x80;
+    else if ((c & 0xF0) == 0xE0)
+      extra = 2, minCode = 0x800;
+    else if ((c & 0xF8) == 0xF0)
+      extra = 3, minCode = 0x10000;
+    else
+      return *why = "invalid UTF-8", i;
     unsigned code = c & (0x3F >> extra);
     for (int k = 1; k <= extra; ++k) {
       if (i + k >= s.size()) return *why = "invalid UTF-8", i;
@@ -40,11 +47,16 @@ size_t firstNonText(std::string_view s, const char** why) {
 
 std::string describe(const Token& t) {
   switch (t.kind) {
-    case TokenKind::Name: return "name '" + std::string(t.text) + "'";
-    case TokenKind::Number: return "number '" + std::string(t.text) + "'";
-    case TokenKind::Size: return "size '" + std::string(t.text) + "'";
-    case TokenKind::End: return "end of file";
-    default: return "'" + std::string(t.text) + "'";
+    case TokenKind::Name:
+      return "name '" + std::string(t.text) + "'";
+    case TokenKind::Number:
+      return "number '" + std::string(t.text) + "'";
+    case TokenKind::Size:
+      return "size '" + std::string(t.text) + "'";
+    case TokenKind::End:
+      return "end of file";
+    default:
+      return "'" + std::string(t.text) + "'";
   }
 }
 
@@ -72,7 +84,10 @@ std::vector<Token> lex(std::string_view src, DiagnosticSink& sink, std::vector<i
       ++i, ++line, lineBegin = i, atLineStart = true;
       continue;
     }
-    if (c == ' ' || c == '\t' || c == '\r') { ++i; continue; }
+    if (c == ' ' || c == '\t' || c == '\r') {
+      ++i;
+      continue;
+    }
     if (c == '#') {
       while (i < src.size() && src[i] != '\n') ++i;
       continue;
@@ -135,12 +150,24 @@ std::vector<Token> lex(std::string_view src, DiagnosticSink& sink, std::vector<i
       ++i;
       t.text = src.substr(start, 1);
       switch (c) {
-        case '{': t.kind = TokenKind::LBrace; break;
-        case '}': t.kind = TokenKind::RBrace; break;
-        case '(': t.kind = TokenKind::LParen; break;
-        case ')': t.kind = TokenKind::RParen; break;
-        case ',': t.kind = TokenKind::Comma; break;
-        case ':': t.kind = TokenKind::Colon; break;
+        case '{':
+          t.kind = TokenKind::LBrace;
+          break;
+        case '}':
+          t.kind = TokenKind::RBrace;
+          break;
+        case '(':
+          t.kind = TokenKind::LParen;
+          break;
+        case ')':
+          t.kind = TokenKind::RParen;
+          break;
+        case ',':
+          t.kind = TokenKind::Comma;
+          break;
+        case ':':
+          t.kind = TokenKind::Colon;
+          break;
         default: {
           // Multi-byte UTF-8 characters are reported whole.
           size_t n = 1;

@@ -18,9 +18,9 @@ struct Token {
   TokenKind kind = TokenKind::End;
   std::string_view text;  // view into the source
   int line = 1, column = 1;
-  bool lineStart = false;  // first token on its line
-  double number = 0;       // Number
-  bool integer = false;    // Number written without '.', 'e'
+  bool lineStart = false;     // first token on its line
+  double number = 0;          // Number
+  bool integer = false;       // Number written without '.', 'e'
   int width = 0, height = 0;  // Size
 };
 

@@ -30,9 +30,12 @@ std::string join(const Names& names) {
 
 std::string describeValue(const Value& v) {
   switch (v.kind) {
-    case Value::Kind::Number: return "number '" + v.text + "'";
-    case Value::Kind::Size: return "size '" + v.text + "'";
-    case Value::Kind::Name: return "name '" + v.text + (v.hasArguments ? "(...)'" : "'");
+    case Value::Kind::Number:
+      return "number '" + v.text + "'";
+    case Value::Kind::Size:
+      return "size '" + v.text + "'";
+    case Value::Kind::Name:
+      return "name '" + v.text + (v.hasArguments ? "(...)'" : "'");
   }
   return "'" + v.text + "'";
 }
@@ -40,9 +43,7 @@ std::string describeValue(const Value& v) {
 struct Range {
   double lo, hi;
   bool loOpen = false, hiOpen = false;
-  std::string text() const {
-    return fmt::format("in {}{}, {}{}", loOpen ? "(" : "[", lo, hi, hiOpen ? ")" : "]");
-  }
+  std::string text() const { return fmt::format("in {}{}, {}{}", loOpen ? "(" : "[", lo, hi, hiOpen ? ")" : "]"); }
   bool contains(double v) const { return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi); }
 };
 
@@ -52,8 +53,8 @@ struct Param {
 };
 using Bound = std::map<std::string_view, const Value*>;
 
-const Names kSettings = {"light", "depth",    "moments", "storage", "blur",    "mips",      "blocker",  "kernel",
-                         "sampling", "bias", "fallback", "contact", "early_out", "bleeding", "map_size"};
+const Names kSettings = {"light",    "depth", "moments",  "storage", "blur",      "mips",     "blocker", "kernel",
+                         "sampling", "bias",  "fallback", "contact", "early_out", "bleeding", "map_size"};
 
 class Checker {
  public:
@@ -238,23 +239,35 @@ class Checker {
   void read(const Setting& s) {
     const Value& v = s.value;
     const std::string what = "'" + s.keyword + "'";
-    if (s.keyword == "light") light_ = &s, readLight(v, what);
-    else if (s.keyword == "depth") readDepth(s);
-    else if (s.keyword == "moments") representation_ = &s, readMoments(v, what);
-    else if (s.keyword == "storage") storage_ = &s, readStorage(v, what);
-    else if (s.keyword == "blur") blur_ = &s, readBlur(v, what);
+    if (s.keyword == "light")
+      light_ = &s, readLight(v, what);
+    else if (s.keyword == "depth")
+      readDepth(s);
+    else if (s.keyword == "moments")
+      representation_ = &s, readMoments(v, what);
+    else if (s.keyword == "storage")
+      storage_ = &s, readStorage(v, what);
+    else if (s.keyword == "blur")
+      blur_ = &s, readBlur(v, what);
     else if (s.keyword == "mips") {
       mips_ = &s;
       if (auto c = choice(&v, what, {"off", "on"})) spec_.prefilter.mips = *c == 1;
-    } else if (s.keyword == "blocker") blocker_ = &s, readBlocker(v, what);
-    else if (s.keyword == "kernel") kernel_ = &s, readKernel(v, what);
-    else if (s.keyword == "sampling") sampling_ = &s, readSampling(v, what);
-    else if (s.keyword == "bias") readBias(v, what);
-    else if (s.keyword == "fallback") fallback_ = &s, readFallback(v, what);
-    else if (s.keyword == "contact") contact_ = &s, readContact(v, what);
+    } else if (s.keyword == "blocker")
+      blocker_ = &s, readBlocker(v, what);
+    else if (s.keyword == "kernel")
+      kernel_ = &s, readKernel(v, what);
+    else if (s.keyword == "sampling")
+      sampling_ = &s, readSampling(v, what);
+    else if (s.keyword == "bias")
+      readBias(v, what);
+    else if (s.keyword == "fallback")
+      fallback_ = &s, readFallback(v, what);
+    else if (s.keyword == "contact")
+      contact_ = &s, readContact(v, what);
     else if (s.keyword == "early_out") {
       if (auto c = choice(&v, what, {"none", "minmax"})) spec_.earlyOutMinMax = *c == 1;
-    } else if (s.keyword == "bleeding") bleeding_ = &s, readBleeding(v, what);
+    } else if (s.keyword == "bleeding")
+      bleeding_ = &s, readBleeding(v, what);
     else if (s.keyword == "map_size") {
       if (auto n = integer(&v, what, 16, 16384)) spec_.mapSize = *n;
     }
@@ -307,7 +320,8 @@ class Checker {
     bind(v, params, b);
     if (const Value* x = get(b, "layers")) {
       // 0 layers would store nothing; 16 layers of rg32f is already 128 bytes per texel.
-      if (auto n = integer(x, arg("layers", v), 1, 16, "at least 1 (a moments map has one layer or more) and at most 16"))
+      if (auto n =
+              integer(x, arg("layers", v), 1, 16, "at least 1 (a moments map has one layer or more) and at most 16"))
         m.layers = *n;
     }
     if (const Value* x = get(b, "overlap")) {
@@ -459,8 +473,10 @@ class Checker {
         return;
       }
       if (auto n = integer(x, arg("size", v), 1, 63)) {
-        if (*n % 2 == 0) at(*x, DiagId::sizeMustBeOdd, arg("size", v), *n);
-        else k.fixedTexels = *n;
+        if (*n % 2 == 0)
+          at(*x, DiagId::sizeMustBeOdd, arg("size", v), *n);
+        else
+          k.fixedTexels = *n;
       }
       return;
     }
@@ -637,7 +653,8 @@ class Checker {
     const BlockerSpec& bl = spec_.blocker;
 
     if (!moments) {
-      if (sat) atSetting(storage_, DiagId::satNeedsMoments);
+      if (sat)
+        atSetting(storage_, DiagId::satNeedsMoments);
       else if (storage_ && spec_.storage.format != StorageFormat::Fp32)
         atSetting(storage_, DiagId::noEffect, "storage", "the depth representation reads the r32f depth map directly");
       if (bl.kind == BlockerKind::Moments) atSetting(blocker_, DiagId::needsMoments, "'blocker moments'", "average");
@@ -649,7 +666,8 @@ class Checker {
         atSetting(bleeding_, DiagId::noEffect, "bleeding", "light bleeding is a moments artifact");
     } else {
       if (bl.kind == BlockerKind::Search) atSetting(blocker_, DiagId::searchOnMoments);
-      if (sampling_) atSetting(sampling_, DiagId::noEffect, "sampling", "it chooses PCF taps of the depth representation");
+      if (sampling_)
+        atSetting(sampling_, DiagId::noEffect, "sampling", "it chooses PCF taps of the depth representation");
     }
 
     // Summed-area tables (vssm-yang2010 sec. 5-6).
@@ -694,10 +712,13 @@ class Checker {
       atSetting(kernel_, DiagId::penumbraNeedsBlocker, kind);
     }
     if (spec_.light.shape == LightShape::Point) {
-      if (bl.kind != BlockerKind::None) atSetting(blocker_, DiagId::pointLightPenumbra, "a blocker estimate");
-      else if (k.size == KernelSize::Penumbra) atSetting(kernel_, DiagId::pointLightPenumbra, "a penumbra kernel");
+      if (bl.kind != BlockerKind::None)
+        atSetting(blocker_, DiagId::pointLightPenumbra, "a blocker estimate");
+      else if (k.size == KernelSize::Penumbra)
+        atSetting(kernel_, DiagId::pointLightPenumbra, "a penumbra kernel");
     }
-    if (spec_.contact.enabled && bl.kind != BlockerKind::Moments) atSetting(contact_, DiagId::contactNeedsMomentBlocker);
+    if (spec_.contact.enabled && bl.kind != BlockerKind::Moments)
+      atSetting(contact_, DiagId::contactNeedsMomentBlocker);
     if (spec_.fallback.pcf && k.subdivision == Subdivision::None)
       atSetting(fallback_, DiagId::noEffect, "fallback",
                 "PCF replaces non-planar leaves of a uniform or quadtree kernel (vssm sec. 5.2)");
@@ -710,12 +731,14 @@ class Checker {
         for (size_t i = 0; i < explicitSplits_.size(); ++i) {
           const double s = explicitSplits_[i];
           const Value& v = split_->arguments[i].value;
-          if (i == 0 && s != 0.0) at(v, DiagId::splitOrder, "start at 0 so every depth falls in a layer", s, i + 1);
+          if (i == 0 && s != 0.0)
+            at(v, DiagId::splitOrder, "start at 0 so every depth falls in a layer", s, i + 1);
           else if (i + 1 == explicitSplits_.size() && s != 1.0)
             at(v, DiagId::splitOrder, "end at 1 so every depth falls in a layer", s, i + 1);
           else if (i > 0 && s <= explicitSplits_[i - 1])
             at(v, DiagId::splitOrder, "increase strictly (each layer needs a depth range)", s, i + 1);
-          else continue;
+          else
+            continue;
           break;
         }
       }
@@ -749,9 +772,9 @@ class Checker {
   const dsl::FilterDecl& f_;
   dsl::DiagnosticSink& sink_;
   FilterSpec spec_;
-  const Setting *light_ = nullptr, *representation_ = nullptr, *storage_ = nullptr, *blur_ = nullptr,
-                *mips_ = nullptr, *blocker_ = nullptr, *kernel_ = nullptr, *sampling_ = nullptr,
-                *fallback_ = nullptr, *contact_ = nullptr, *bleeding_ = nullptr;
+  const Setting *light_ = nullptr, *representation_ = nullptr, *storage_ = nullptr, *blur_ = nullptr, *mips_ = nullptr,
+                *blocker_ = nullptr, *kernel_ = nullptr, *sampling_ = nullptr, *fallback_ = nullptr,
+                *contact_ = nullptr, *bleeding_ = nullptr;
   const Value *exponent_ = nullptr, *negativeExponent_ = nullptr, *minVariance_ = nullptr, *split_ = nullptr,
               *kernelHeight_ = nullptr, *blockerHeight_ = nullptr;
   bool lightSizeGiven_ = false, explicitOk_ = false;

@@ -10,70 +10,97 @@ namespace shadowc {
 namespace {
 const char* name(LightShape v) {
   switch (v) {
-    case LightShape::Rect: return "area";
-    case LightShape::Disk: return "disk";
-    case LightShape::Point: return "point";
+    case LightShape::Rect:
+      return "area";
+    case LightShape::Disk:
+      return "disk";
+    case LightShape::Point:
+      return "point";
   }
   return "?";
 }
 const char* name(Representation v) { return v == Representation::Depth ? "depth" : "moments"; }
 const char* name(Warp v) {
   switch (v) {
-    case Warp::Linear: return "linear";
-    case Warp::Exp: return "exp";
-    case Warp::Evsm2: return "evsm2";
-    case Warp::Evsm4: return "evsm4";
-    case Warp::PowerCdf: return "power_cdf";
+    case Warp::Linear:
+      return "linear";
+    case Warp::Exp:
+      return "exp";
+    case Warp::Evsm2:
+      return "evsm2";
+    case Warp::Evsm4:
+      return "evsm4";
+    case Warp::PowerCdf:
+      return "power_cdf";
   }
   return "?";
 }
 const char* name(SplitPlacement v) {
   switch (v) {
-    case SplitPlacement::Uniform: return "uniform";
-    case SplitPlacement::Explicit: return "explicit";
-    case SplitPlacement::Lloyd: return "lloyd";
+    case SplitPlacement::Uniform:
+      return "uniform";
+    case SplitPlacement::Explicit:
+      return "explicit";
+    case SplitPlacement::Lloyd:
+      return "lloyd";
   }
   return "?";
 }
 const char* name(StorageFormat v) {
   switch (v) {
-    case StorageFormat::Fp32: return "fp32";
-    case StorageFormat::Fp16: return "fp16";
-    case StorageFormat::Unorm16: return "unorm16";
+    case StorageFormat::Fp32:
+      return "fp32";
+    case StorageFormat::Fp16:
+      return "fp16";
+    case StorageFormat::Unorm16:
+      return "unorm16";
   }
   return "?";
 }
 const char* name(SatKind v) {
   switch (v) {
-    case SatKind::None: return "none";
-    case SatKind::Int32: return "int32";
-    case SatKind::Fp32Centered: return "fp32_centered";
-    case SatKind::Fp32Naive: return "fp32";
+    case SatKind::None:
+      return "none";
+    case SatKind::Int32:
+      return "int32";
+    case SatKind::Fp32Centered:
+      return "fp32_centered";
+    case SatKind::Fp32Naive:
+      return "fp32";
   }
   return "?";
 }
 const char* name(BlurKind v) {
   switch (v) {
-    case BlurKind::None: return "none";
-    case BlurKind::Box: return "box";
-    case BlurKind::Gaussian: return "gaussian";
+    case BlurKind::None:
+      return "none";
+    case BlurKind::Box:
+      return "box";
+    case BlurKind::Gaussian:
+      return "gaussian";
   }
   return "?";
 }
 const char* name(BlockerKind v) {
   switch (v) {
-    case BlockerKind::None: return "none";
-    case BlockerKind::Search: return "search";
-    case BlockerKind::Moments: return "moments";
+    case BlockerKind::None:
+      return "none";
+    case BlockerKind::Search:
+      return "search";
+    case BlockerKind::Moments:
+      return "moments";
   }
   return "?";
 }
 const char* name(SamplePattern v) { return v == SamplePattern::Grid ? "grid" : "poisson"; }
 const char* name(Subdivision v) {
   switch (v) {
-    case Subdivision::None: return "none";
-    case Subdivision::Uniform: return "uniform";
-    case Subdivision::Quadtree: return "quadtree";
+    case Subdivision::None:
+      return "none";
+    case Subdivision::Uniform:
+      return "uniform";
+    case Subdivision::Quadtree:
+      return "quadtree";
   }
   return "?";
 }
@@ -81,18 +108,24 @@ const char* name(KernelSize v) { return v == KernelSize::Fixed ? "fixed" : "penu
 const char* name(QuadtreeTraversal v) { return v == QuadtreeTraversal::Table ? "table" : "unrolled"; }
 const char* name(PcfPattern v) {
   switch (v) {
-    case PcfPattern::Grid: return "grid";
-    case PcfPattern::Bilinear: return "bilinear";
-    case PcfPattern::Poisson: return "poisson";
+    case PcfPattern::Grid:
+      return "grid";
+    case PcfPattern::Bilinear:
+      return "bilinear";
+    case PcfPattern::Poisson:
+      return "poisson";
   }
   return "?";
 }
 const char* name(Rotation v) { return v == Rotation::Stable ? "stable" : "none"; }
 const char* name(BiasKind v) {
   switch (v) {
-    case BiasKind::Constant: return "constant";
-    case BiasKind::SlopeScaled: return "slope";
-    case BiasKind::NormalOffset: return "normal_offset";
+    case BiasKind::Constant:
+      return "constant";
+    case BiasKind::SlopeScaled:
+      return "slope";
+    case BiasKind::NormalOffset:
+      return "normal_offset";
   }
   return "?";
 }
@@ -119,18 +152,14 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
   j["prefilter"] =
       J{{"blur", name(s.prefilter.blur)}, {"blur_radius", s.prefilter.blurRadius}, {"mips", s.prefilter.mips}};
   const BlockerSpec& b = s.blocker;
-  j["blocker"] = J{{"kind", name(b.kind)},           {"taps", b.taps},
-                   {"pattern", name(b.pattern)},     {"subdivision", name(b.subdivision)},
-                   {"uniform_m", b.uniformM},        {"quadtree_height", b.quadtreeHeight}};
+  j["blocker"] = J{{"kind", name(b.kind)},       {"taps", b.taps},
+                   {"pattern", name(b.pattern)}, {"subdivision", name(b.subdivision)},
+                   {"uniform_m", b.uniformM},    {"quadtree_height", b.quadtreeHeight}};
   const KernelSpec& k = s.kernel;
-  j["kernel"] = J{{"size", name(k.size)},
-                  {"fixed_texels", k.fixedTexels},
-                  {"subdivision", name(k.subdivision)},
-                  {"uniform_n", k.uniformN},
-                  {"quadtree_height", k.quadtreeHeight},
-                  {"traversal", name(k.traversal)},
-                  {"max_texels", k.maxTexels},
-                  {"lit_threshold", k.litThreshold}};
+  j["kernel"] =
+      J{{"size", name(k.size)},      {"fixed_texels", k.fixedTexels},       {"subdivision", name(k.subdivision)},
+        {"uniform_n", k.uniformN},   {"quadtree_height", k.quadtreeHeight}, {"traversal", name(k.traversal)},
+        {"max_texels", k.maxTexels}, {"lit_threshold", k.litThreshold}};
   j["sampling"] = J{{"pattern", name(s.sampling.pattern)},
                     {"grid_n", s.sampling.gridN},
                     {"taps", s.sampling.taps},

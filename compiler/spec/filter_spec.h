@@ -153,6 +153,10 @@ struct FilterSpec {
   // lower the EVSM exponent limit by ln(W^2)/2 (FACTS.md "Precision"). The runtime must not
   // run the filter on a larger map. Setting `map_size`.
   int mapSize = 2048;
+  // Debug only, not reachable from the DSL: drop the NaN/Inf guards of the VSSM blocker
+  // estimate (eq. 4's 1/(1 - P)) and the final [0, 1] sanitation, so the stability suite
+  // (validation/, docs/stability.md) can show the naive form failing. Never set by the checker.
+  bool naiveUnguarded = false;
 };
 
 }  // namespace shadowc

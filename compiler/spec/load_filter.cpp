@@ -22,8 +22,10 @@ constexpr size_t kMaxSourceBytes = 1 << 20;
 void sortByLocation(std::vector<Diagnostic>& diagnostics) {
   std::vector<std::vector<Diagnostic>> groups;
   for (Diagnostic& d : diagnostics) {
-    if (d.severity == Severity::Note && !groups.empty()) groups.back().push_back(std::move(d));
-    else groups.push_back({std::move(d)});
+    if (d.severity == Severity::Note && !groups.empty())
+      groups.back().push_back(std::move(d));
+    else
+      groups.push_back({std::move(d)});
   }
   std::stable_sort(groups.begin(), groups.end(), [](const auto& a, const auto& b) {
     auto key = [](const Diagnostic& d) {

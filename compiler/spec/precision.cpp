@@ -1,9 +1,9 @@
 // Exponent limits per storage format. Numbers: FACTS.md "Precision".
 #include "spec/precision.h"
 
-#include <cmath>
-
 #include <fmt/format.h>
+
+#include <cmath>
 
 namespace shadowc::spec {
 
@@ -27,13 +27,16 @@ ExponentLimit warpExponentLimit(const StorageSpec& storage, int mapSize) {
               fmt::format("fp32 c <= 42, minus ln(W^2)/2 = {:.2f} for sums over a {}^2 map (map_size)",
                           std::log(w * w) / 2.0, mapSize),
               fmt::format("an fp32 SAT of {}^2 texels", mapSize)};
-    case SatKind::None: break;
+    case SatKind::None:
+      break;
   }
   switch (storage.format) {
-    case StorageFormat::Fp16: return {kFp16, "exp(2c) must stay below 65504, the largest fp16", "fp16"};
+    case StorageFormat::Fp16:
+      return {kFp16, "exp(2c) must stay below 65504, the largest fp16", "fp16"};
     case StorageFormat::Unorm16:
       return {k16Bits, "unorm16 keeps 16 bits: exp(2c) must stay within 2^16", "unorm16"};
-    case StorageFormat::Fp32: break;
+    case StorageFormat::Fp32:
+      break;
   }
   return {kFp32, "exp(2c) must stay finite in fp32 (ln(FLT_MAX)/2 = 44.4; 42 keeps headroom)", "fp32"};
 }

@@ -12,8 +12,8 @@
 namespace shadowc::spec {
 
 struct ExponentLimit {
-  double maxExponent = 0;  // largest safe warp exponent c for this storage
-  std::string reason;      // one line: where the limit comes from
+  double maxExponent = 0;   // largest safe warp exponent c for this storage
+  std::string reason;       // one line: where the limit comes from
   std::string storageName;  // "fp16", "an fp32 SAT of 2048^2 texels", ...
 };
 

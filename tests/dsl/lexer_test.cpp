@@ -1,10 +1,11 @@
 // Lexer and parser units: token kinds, numbers, sizes, comments, line starts, AST shape.
-#include <set>
+#include "dsl/lexer.h"
 
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "dsl/diagnostics.h"
-#include "dsl/lexer.h"
 #include "dsl/parser.h"
 
 using namespace shadowc;
@@ -29,7 +30,7 @@ TEST(Lexer, KindsAndPositions) {
   std::vector<TokenKind> kinds;
   for (const Token& t : l.tokens) kinds.push_back(t.kind);
   using K = TokenKind;
-  const std::vector<K> expected = {K::Name,  K::Name,  K::LBrace, K::Name, K::Name,   K::LParen, K::Name, K::Colon,
+  const std::vector<K> expected = {K::Name,   K::Name,  K::LBrace, K::Name,  K::Name, K::LParen, K::Name,   K::Colon,
                                    K::Number, K::Comma, K::Name,   K::Colon, K::Size, K::RParen, K::RBrace, K::End};
   EXPECT_EQ(kinds, expected);
   EXPECT_EQ(l.tokens[3].text, "kernel");
@@ -88,7 +89,8 @@ TEST(Parser, NestedArgumentsBuildTheAst) {
   std::vector<Diagnostic> diags;
   DiagnosticSink sink(diags, "t");
   const std::string text =
-      "filter f {\n  blocker moments(uniform(m: 5))\n  moments linear(layers: 3,\n    split: explicit(0, 0.2, 0.5, 1))\n"
+      "filter f {\n  blocker moments(uniform(m: 5))\n  moments linear(layers: 3,\n    split: explicit(0, 0.2, 0.5, "
+      "1))\n"
       "  depth\n}\n";
   const File file = parse(lex(text, sink), sink);
   ASSERT_TRUE(diags.empty());
@@ -112,7 +114,8 @@ TEST(Parser, NestedArgumentsBuildTheAst) {
 TEST(Parser, RecoversAtTheNextLine) {
   std::vector<Diagnostic> diags;
   DiagnosticSink sink(diags, "t");
-  const File file = parse(lex("filter f {\n  kernel quadtree(height: 3\n  depth\n  bias ) x\n  mips on\n}\n", sink), sink);
+  const File file =
+      parse(lex("filter f {\n  kernel quadtree(height: 3\n  depth\n  bias ) x\n  mips on\n}\n", sink), sink);
   ASSERT_EQ(diags.size(), 2u);
   EXPECT_EQ(diags[0].code, "E0206");
   EXPECT_EQ(diags[1].code, "E0211");

@@ -2,11 +2,11 @@
 //   # expect: CODE at LINE:COL      the first diagnostic's stable code and location
 //   # options: -Werror              (optional)
 // and NAME.expected holds the full glslc-style output (SHADOWC_UPDATE_GOLDEN=1 rewrites it).
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <filesystem>
 #include <regex>
-
-#include <gtest/gtest.h>
 
 #include "spec/load_filter.h"
 #include "support/test_support.h"

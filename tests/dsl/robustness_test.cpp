@@ -1,9 +1,9 @@
 // Hostile input: empty, binary, huge, deeply nested. Each must end quickly with a bounded,
 // small number of errors (never a crash, never thousands of lines).
+#include <gtest/gtest.h>
+
 #include <fstream>
 #include <random>
-
-#include <gtest/gtest.h>
 
 #include "dsl/diagnostics.h"
 #include "spec/load_filter.h"

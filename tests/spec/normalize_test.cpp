@@ -1,8 +1,8 @@
 // Normalization: every default explicit, defaults that depend on other settings, splits,
 // precision limits (both sides of each boundary), and the JSON's fixed key order.
-#include <cmath>
-
 #include <gtest/gtest.h>
+
+#include <cmath>
 
 #include "spec/load_filter.h"
 #include "spec/precision.h"
@@ -90,7 +90,7 @@ TEST(Precision, BothSidesOfTheFp16Boundary) {
 
 TEST(Precision, BothSidesOfTheSatBoundaryDependOnMapSize) {
   const std::string sat = "\nstorage sat(fp32_centered)\nblocker moments\nkernel uniform(4)";
-  EXPECT_EQ(codes("moments exp(exponent: 34)" + sat), Codes{});                       // 2048: limit 34.38
+  EXPECT_EQ(codes("moments exp(exponent: 34)" + sat), Codes{});                        // 2048: limit 34.38
   EXPECT_EQ(codes("moments exp(exponent: 34)\nmap_size 4096" + sat), Codes{"E0404"});  // 4096: 33.68
   EXPECT_EQ(codes("moments exp(exponent: 35)" + sat), Codes{"E0404"});
 }
@@ -116,13 +116,14 @@ TEST(Combinations, WerrorTurnsWarningsIntoErrors) {
 }
 
 TEST(SpecJson, FixedKeyOrderAndEveryField) {
-  const nlohmann::ordered_json j = specToJson(load("moments linear(layers: 2)\nstorage sat(int32)\nblocker moments"
-                                                   "\nkernel quadtree(3)"));
+  const nlohmann::ordered_json j =
+      specToJson(load("moments linear(layers: 2)\nstorage sat(int32)\nblocker moments"
+                      "\nkernel quadtree(3)"));
   std::vector<std::string> keys;
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
-  const std::vector<std::string> expected = {"name",    "light",  "representation", "moments", "storage",
-                                             "prefilter", "blocker", "kernel",       "sampling", "bias",
-                                             "fallback", "contact", "early_out_minmax", "map_size"};
+  const std::vector<std::string> expected = {"name",      "light",   "representation",   "moments",  "storage",
+                                             "prefilter", "blocker", "kernel",           "sampling", "bias",
+                                             "fallback",  "contact", "early_out_minmax", "map_size"};
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(j["moments"].size(), 10u);
   EXPECT_EQ(j["kernel"].size(), 8u);

@@ -1,9 +1,9 @@
 // Every sample filter loads with zero errors, and zero warnings unless the sample says it is
 // meant to warn (a "# expect: Wxxxx at L:C" directive, as in the negative tests).
+#include <gtest/gtest.h>
+
 #include <filesystem>
 #include <regex>
-
-#include <gtest/gtest.h>
 
 #include "spec/load_filter.h"
 #include "support/test_support.h"
