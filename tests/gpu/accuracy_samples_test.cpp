@@ -36,6 +36,9 @@ struct SampleCase {
   std::vector<SceneBound> scenes;
 };
 
+// Readable ctest names ("GetParam() = vssm_contact" instead of a byte dump).
+void PrintTo(const SampleCase& c, std::ostream* os) { *os << c.sample; }
+
 std::string caseSource(const SampleCase& c) {
   std::string text = sampleSource(c.sample);
   if (c.replaceFrom) {
