@@ -25,7 +25,7 @@ void main() {
   if (position.w != 0.0) {
     vec3 normal = imageLoad(gbuffer_normal, pixel).xyz;
     v = shadowc_visibility(position.xyz, normal);
-  }
+  } SHADOWC_NAIVE_STORE_RAW(v)
   // shadowc_visibility already maps NaN to 0 and clamps; kept here so the pass contract
   // (visibility in [0, 1], never NaN) does not depend on the lookup.
   v = (v >= 0.0) ? min(v, 1.0) : 0.0;

@@ -165,6 +165,8 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
   defInt("SHADOWC_CONTACT_N", std::max(1, s.contact.n));
   defFloat("SHADOWC_CONTACT_EPSILON", s.contact.epsilon);
   defInt("SHADOWC_EARLY_OUT", s.earlyOutMinMax ? 1 : 0);
+  // Stability-suite demonstration only (FilterSpec::naiveUnguarded; validation/).
+  if (s.naiveUnguarded) defInt("SHADOWC_NAIVE_UNGUARDED", 1);
 
   // ---- generated tables -------------------------------------------------------------------
   const bool depthPoisson = (tech == 0 || tech == 1) && s.sampling.pattern == PcfPattern::Poisson;

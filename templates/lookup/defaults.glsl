@@ -209,4 +209,23 @@
 #define SHADOWC_EARLY_OUT 0
 #endif
 
+// ---- stability-suite demonstration (FilterSpec::naiveUnguarded; docs/stability.md) ----------
+// 1: eq. 4 of vssm-yang2010 as printed (no 1 - P guard, no clamp), the raw blocker depth written
+// to the visibility image without sanitation, so the suite can show the naive form failing.
+// Single-line hooks so that the normal path's text and line numbers do not change.
+#ifndef SHADOWC_NAIVE_UNGUARDED
+#define SHADOWC_NAIVE_UNGUARDED 0
+#endif
+#if SHADOWC_NAIVE_UNGUARDED
+#define SHADOWC_NAIVE_BLOCKER_RETURN(mean, p, d) return (mean - p * d) / (1.0 - p);
+#define SHADOWC_NAIVE_VSSM_RETURN(zb) return zb;
+#define SHADOWC_NAIVE_SANITIZE(v) (v)
+#define SHADOWC_NAIVE_STORE_RAW(v) { imageStore(visibility, pixel, vec4(v, 0.0, 0.0, 0.0)); return; }
+#else
+#define SHADOWC_NAIVE_BLOCKER_RETURN(mean, p, d)
+#define SHADOWC_NAIVE_VSSM_RETURN(zb)
+#define SHADOWC_NAIVE_SANITIZE(v) shadowc_unit(v)
+#define SHADOWC_NAIVE_STORE_RAW(v)
+#endif
+
 #endif

@@ -96,7 +96,7 @@ float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
   float v = shadowc_pcf(r, SHADOWC_KERNEL_FIXED_TEXELS);
 #endif
 #endif
-  return shadowc_unit(v);
+  return SHADOWC_NAIVE_SANITIZE(v);
 }
 
 #endif

@@ -158,7 +158,7 @@ float shadowc_vssmBlocker(ivec4 searchRect, float d) {
   if (shadowc_aVsmArea > 0.0) {
     float mean = shadowc_aEx / shadowc_aVsmArea;
     float meanSq = shadowc_aEx2 / shadowc_aVsmArea;
-    float p = shadowc_chebyshev(mean, meanSq, d, shadowc_vMinVariance);
+    float p = shadowc_chebyshev(mean, meanSq, d, shadowc_vMinVariance); SHADOWC_NAIVE_BLOCKER_RETURN(mean, p, d)
     if (1.0 - p > 1e-4) {
       z1 = clamp((mean - p * d) / (1.0 - p), 0.0, d);
       a1 = (1.0 - p) * shadowc_aVsmArea;
@@ -195,7 +195,7 @@ float shadowc_vssmVisibility(ivec4 rect, float d) {
 }
 
 float shadowc_vssm(ShadowcReceiver r) {
-  float zb = shadowc_vssmBlocker(shadowc_kernelRect(r.texel, shadowc_searchTexels(r)), r.d);
+  float zb = shadowc_vssmBlocker(shadowc_kernelRect(r.texel, shadowc_searchTexels(r)), r.d); SHADOWC_NAIVE_VSSM_RETURN(zb)
   if (zb < 0.0) return 1.0;  // no blocker in the search region
 #if SHADOWC_KERNEL_PENUMBRA
   float w = shadowc_penumbraTexels(r, zb);
