@@ -14,5 +14,6 @@ CommandRunner registerCompile(CLI::App& app);    // cmd_compile.cpp
 CommandRunner registerCheck(CLI::App& app);      // cmd_check.cpp
 CommandRunner registerValidate(CLI::App& app);   // cmd_validate.cpp
 CommandRunner registerDemo(CLI::App& app);       // cmd_demo.cpp
+CommandRunner registerStability(CLI::App& app);  // cmd_stability.cpp
 
 }  // namespace shadowc::cli

@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
   add(registerCheck);
   add(registerValidate);
   add(registerDemo);
+  add(registerStability);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

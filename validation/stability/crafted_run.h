@@ -1,0 +1,81 @@
+// Crafted GPU runs for the stability suite: a FilterSpec compiled in process (emitFilter), a
+// hand-made shadow map (R32F normalized depth) and hand-placed receivers, every pass run by the
+// PassExecutor, the visibility (and any intermediate image) read back.
+// Receivers are placed exactly: the light view is the identity, so a receiver at shadow-map uv
+// (u, v) and normalized depth d sits at z = near + d (far - near), x = (2u - 1) z tanHalfFov
+// (frame.glsl conventions; the briefing's receiver test z < d - bias).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "manifest/frame_uniforms.h"
+#include "manifest/manifest.h"
+#include "runtime/executor/host_image.h"
+#include "spec/filter_spec.h"
+
+namespace shadowc::rt {
+class VulkanContext;
+}
+
+namespace shadowc::validation {
+
+struct CompiledFilter {
+  FilterSpec spec;
+  Manifest manifest;
+  std::filesystem::path dir;  // manifest.json and *.spv, kept for the life of the process
+};
+
+// Compiles once per distinct spec per process (the spec JSON plus the debug flags is the key).
+// Throws std::runtime_error with the compiler log when the filter does not compile.
+const CompiledFilter& compileCached(const FilterSpec& spec);
+
+// Checked spec from DSL text; throws std::runtime_error with the diagnostics on errors.
+FilterSpec specFromSource(const std::string& text, const std::string& name);
+
+struct LightFrame {
+  double tanHalfFov = 1.0, nearZ = 1.0, farZ = 11.0;
+  double lightWidth = 0.5;  // world units (used by filters with `size: scene`)
+};
+
+struct Receiver {
+  double u = 0.5, v = 0.5, d = 0.5;
+  // Unit normal in light view; unset = facing the light centre (N.L = 1).
+  std::optional<std::array<double, 3>> normal;
+};
+
+// A depth map, row-major, `size` x `size`.
+struct DepthMap {
+  uint32_t size = 0;
+  std::vector<float> depth;
+  float at(int x, int y) const;  // clamp to edge
+};
+DepthMap constantMap(uint32_t size, float d);
+
+ShadowcFrame makeFrame(const LightFrame& light, uint32_t mapSize, uint32_t screenW, uint32_t screenH);
+// World (= light view) position of a receiver, in double and as the GPU sees it (fp32).
+std::array<double, 3> receiverPosition(const LightFrame& light, const Receiver& r);
+// The normalized depth the shade pass computes for the receiver (fp32 arithmetic of frame.glsl).
+double gpuReceiverDepth(const LightFrame& light, const Receiver& r);
+
+struct CraftedResult {
+  std::vector<float> visibility;                // one per receiver
+  std::map<std::string, rt::HostImage> images;  // the requested intermediate images (level 0, layer 0)
+};
+
+CraftedResult runCrafted(rt::VulkanContext& ctx, const CompiledFilter& filter, const DepthMap& map,
+                         const std::vector<Receiver>& receivers, const LightFrame& light,
+                         const std::vector<std::string>& downloads = {});
+
+// Receivers at the centres of texels (x, y) of a map of `size`.
+inline Receiver atTexel(uint32_t size, double x, double y, double d) {
+  return {(x + 0.5) / double(size), (y + 0.5) / double(size), d, std::nullopt};
+}
+
+}  // namespace shadowc::validation

@@ -1,0 +1,483 @@
+#include "validation/stability/intent_reference.h"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <memory>
+
+namespace shadowc::validation {
+namespace {
+
+double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
+double unit(double v) { return v >= 0.0 ? std::min(v, 1.0) : 0.0; }
+
+std::vector<double> blurWeights(BlurKind kind, int r) {  // compiler/plan/planner.cpp, in double
+  std::vector<double> w(size_t(r) + 1, 1.0);
+  if (kind == BlurKind::Gaussian) {
+    const double sigma = std::max(0.5, r / 2.0);
+    for (int k = 0; k <= r; ++k) w[k] = std::exp(-(k * k) / (2.0 * sigma * sigma));
+  }
+  double total = w[0];
+  for (int k = 1; k <= r; ++k) total += 2.0 * w[k];
+  for (double& x : w) x /= total;
+  return w;
+}
+
+std::vector<double> splitsOf(const FilterSpec& s) {
+  const int layers = s.moments.layers;
+  if (s.moments.splits.size() == size_t(layers + 1)) return s.moments.splits;
+  std::vector<double> out;
+  for (int i = 0; i <= layers; ++i) out.push_back(double(i) / layers);
+  return out;
+}
+
+// Chebyshev upper bound (chebyshev.glsl) and Lauritzen's linstep.
+double chebyshev(double mean, double meanSq, double t, double minVariance) {
+  if (t <= mean) return 1.0;
+  const double variance = std::max(meanSq - mean * mean, minVariance);
+  const double dt = t - mean;
+  const double denom = variance + dt * dt;
+  return denom > 0 ? unit(variance / denom) : 0.0;
+}
+double reduceBleeding(const FilterSpec& s, double p) {
+  const double a = std::clamp(s.moments.bleedingReduction, 0.0, 0.999);
+  return a > 0 ? clamp01((p - a) / (1 - a)) : p;
+}
+
+// power-cdf-shadow-maps.txt eq. 3-4 with the exact beta (no clamp): the intent.
+double powerCdf(double zmin, double zmax, double mean, double d) {
+  if (zmin > zmax) std::swap(zmin, zmax);
+  mean = std::clamp(mean, zmin, zmax);
+  if (d <= mean) return 1.0;
+  if (d >= zmax) return 0.0;  // beyond every occluder (also zmax == zmin)
+  const double dz = zmax - zmin;
+  const double t = (d - zmin) / dz;
+  if (zmax - mean <= 0) return 0.0;  // every texel at zmax < d handled above; mean == zmax < d
+  const double beta = (mean - zmin) / (zmax - mean);
+  if (beta == 0) return 0.0;  // all mass at zmin < d: fully shadowed
+  const double tMean = beta / (beta + 1);
+  const double denom = 1 - std::pow(tMean, beta);
+  return unit((1 - std::pow(t, beta)) / denom);
+}
+
+struct Geometry {
+  double t;       // biased receiver depth (fp32-emulated receiver depth minus bias)
+  double cx, cy;  // continuous texel coordinates
+  double zr;      // view z of the receiver
+  double lightWidth;
+};
+
+class Evaluator {
+ public:
+  Evaluator(const FilterSpec& s, const DepthMap& map, const LightFrame& light, double widthScale,
+            const MomentsField* field)
+      : s_(s), map_(map), light_(light), scale_(widthScale), field_(field) {}
+
+  double searchTexels(const Geometry& g) const {
+    const double lightUV = g.lightWidth / (2 * light_.nearZ * light_.tanHalfFov);
+    return clampTexels(lightUV * (g.zr - light_.nearZ) / g.zr * map_.size * scale_);
+  }
+  double penumbraTexels(const Geometry& g, double zBlocker) const {
+    const double zb = std::max(light_.nearZ + clamp01(zBlocker) * (light_.farZ - light_.nearZ), light_.nearZ);
+    const double lightUV = g.lightWidth / (2 * light_.nearZ * light_.tanHalfFov);
+    return clampTexels(lightUV * light_.nearZ * (g.zr - zb) / (zb * g.zr) * map_.size * scale_);
+  }
+  double maxTexels() const {
+    const bool int32Sat = s_.representation == Representation::Moments && s_.storage.sat == SatKind::Int32;
+    return std::clamp(s_.kernel.maxTexels, 1.0, int32Sat ? 255.0 : 1e6);
+  }
+  double clampTexels(double w) const { return w >= 1.0 ? std::min(w, maxTexels()) : 1.0; }
+  std::array<int, 4> kernelRect(double cx, double cy, double w) const {
+    const int n = int(clampTexels(w) + 0.5);
+    const int last = int(map_.size) - 1;
+    const int lx = int(std::floor(cx - 0.5 * n + 0.5)), ly = int(std::floor(cy - 0.5 * n + 0.5));
+    return {std::clamp(lx, 0, last), std::clamp(ly, 0, last), std::clamp(lx + n - 1, 0, last),
+            std::clamp(ly + n - 1, 0, last)};
+  }
+
+  double pcfGrid(double cx, double cy, double w, double t, int n) const {
+    double lit = 0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const double px = cx + (i + 0.5 - 0.5 * n) * (w / n), py = cy + (j + 0.5 - 0.5 * n) * (w / n);
+        lit += map_.at(int(std::floor(px)), int(std::floor(py))) < t ? 0.0 : 1.0;
+      }
+    return lit / (n * n);
+  }
+
+  // ---- moments ---------------------------------------------------------------------------
+  void ensureField() const {}
+  std::vector<double> bilinear(double u, double v, int layer) const {
+    const double x = u * map_.size - 0.5, y = v * map_.size - 0.5;
+    const int x0 = int(std::floor(x)), y0 = int(std::floor(y));
+    const double fx = x - x0, fy = y - y0;
+    std::vector<double> out(4, 0.0);
+    const double w[4] = {(1 - fx) * (1 - fy), fx * (1 - fy), (1 - fx) * fy, fx * fy};
+    const int dx[4] = {0, 1, 0, 1}, dy[4] = {0, 0, 1, 1};
+    for (int k = 0; k < 4; ++k) {
+      const auto m = field_->texel(x0 + dx[k], y0 + dy[k], layer);
+      for (int c = 0; c < 4; ++c) out[c] += w[k] * m[c];
+    }
+    return out;
+  }
+  std::vector<double> kernelMoments(const Geometry& g, const std::array<int, 4>& rect, int layer) const {
+    ensureField();
+    if (s_.storage.sat != SatKind::None) return field_->boxMean(rect[0], rect[1], rect[2], rect[3], layer);
+    return bilinear(g.cx / map_.size, g.cy / map_.size, layer);
+  }
+  double estimate(const std::vector<double>& m, double d, double minVariance) const {
+    switch (s_.moments.warp) {
+      case Warp::Linear:
+        return reduceBleeding(s_, chebyshev(m[0], m[1], d, minVariance));
+      case Warp::Exp: {
+        const double c = s_.moments.positiveExponent;
+        return unit(m[0] * std::exp(-c * (d - 1)));
+      }
+      case Warp::Evsm2:
+      case Warp::Evsm4: {
+        const double dc = clamp01(d);
+        const double cp = s_.moments.positiveExponent, cn = s_.moments.negativeExponent;
+        const double ep = std::exp(cp * (dc - 1)), sp = cp * ep;
+        double v = reduceBleeding(s_, chebyshev(m[0], m[1], ep, minVariance * sp * sp));
+        if (s_.moments.warp == Warp::Evsm4) {
+          const double en = std::exp(-cn * (dc - 1)), sn = cn * en;
+          v = std::min(v, reduceBleeding(s_, chebyshev(m[2], m[3], -en, minVariance * sn * sn)));
+        }
+        return v;
+      }
+      case Warp::PowerCdf:
+        return powerCdf(m[0], m[1], m[2], d);
+    }
+    return 0;
+  }
+  double split(int i) const { return s_.moments.layers > 1 ? splits_[i] : (i == 0 ? 0.0 : 1.0); }
+  std::array<double, 2> layerRange(int i) const {
+    if (s_.moments.layers == 1) return {0.0, 1.0};
+    return {split(i) - s_.moments.overlap, split(i + 1) + s_.moments.overlap};
+  }
+  double layerVisibility(const Geometry& g, const std::array<int, 4>& rect, double d, int layer) const {
+    const auto r = layerRange(layer);
+    const double w = std::max(r[1] - r[0], 1e-6);
+    const double dl = s_.moments.layers > 1 ? clamp01((d - r[0]) / w) : d;
+    const double mv = s_.moments.layers > 1 ? s_.moments.minVariance / (w * w) : s_.moments.minVariance;
+    return estimate(kernelMoments(g, rect, layer), dl, mv);
+  }
+  double filteredVisibility(const Geometry& g, const std::array<int, 4>& rect, double d) const {
+    const int layers = s_.moments.layers;
+    int j = 0;
+    for (int i = 1; i < layers; ++i)
+      if (d >= split(i)) j = i;
+    double v = layerVisibility(g, rect, d, j);
+    const double delta = s_.moments.overlap;
+    if (layers > 1 && delta > 0) {
+      if (j + 1 < layers && d > split(j + 1) - delta) {
+        const double t = clamp01((d - (split(j + 1) - delta)) / (2 * delta));
+        v = v + (layerVisibility(g, rect, d, j + 1) - v) * t;
+      } else if (j > 0 && d < split(j) + delta) {
+        const double t = clamp01((d - (split(j) - delta)) / (2 * delta));
+        const double prev = layerVisibility(g, rect, d, j - 1);
+        v = prev + (v - prev) * t;
+      }
+    }
+    return v;
+  }
+
+  // ---- VSSM (vssm.glsl, Algorithm 2) -----------------------------------------------------
+  struct Acc {
+    double ex = 0, ex2 = 0, vsm = 0, lit = 0, pcf = 0, pcfOcc = 0, pcfDepth = 0;
+  };
+  std::array<int, 4> subRect(const std::array<int, 4>& root, int ix, int iy, int den) const {
+    const int sx = root[2] - root[0] + 1, sy = root[3] - root[1] + 1;
+    return {root[0] + (ix * sx) / den, root[1] + (iy * sy) / den, root[0] + ((ix + 1) * sx) / den - 1,
+            root[1] + ((iy + 1) * sy) / den - 1};
+  }
+  int classify(const std::array<int, 4>& r, double d, Acc& a) const {
+    if (r[2] < r[0] || r[3] < r[1]) return 0;
+    const double area = double(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
+    const auto m = field_->boxMean(r[0], r[1], r[2], r[3], 0);
+    const double variance = m[1] - m[0] * m[0];
+    if (m[0] >= d && variance < s_.kernel.litThreshold) {
+      a.lit += area;
+      return 0;
+    }
+    if (m[0] < d) {
+      a.ex += m[0] * area;
+      a.ex2 += m[1] * area;
+      a.vsm += area;
+      return 0;
+    }
+    return 1;
+  }
+  void resolveLeaf(const std::array<int, 4>& r, double d, Acc& a) const {
+    if (r[2] < r[0] || r[3] < r[1]) return;
+    const double area = double(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
+    if (!s_.fallback.pcf) {
+      a.lit += area;
+      return;
+    }
+    const int n = std::max(1, s_.fallback.n);
+    const double sx = r[2] - r[0] + 1, sy = r[3] - r[1] + 1;
+    double occ = 0, depthSum = 0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const int tx = r[0] + int(std::floor((i + 0.5) * sx / n)), ty = r[1] + int(std::floor((j + 0.5) * sy / n));
+        const double z = map_.at(tx, ty);
+        if (z < d) {
+          occ += 1;
+          depthSum += z;
+        }
+      }
+    const double scale = area / (n * n);
+    a.pcf += area;
+    a.pcfOcc += occ * scale;
+    a.pcfDepth += depthSum * scale;
+  }
+  void walk(const std::array<int, 4>& root, Subdivision sub, int param, double d, Acc& a) const {
+    if (sub == Subdivision::Quadtree) {
+      const std::function<void(int, int, int)> visit = [&](int ix, int iy, int den) {
+        const auto r = subRect(root, ix, iy, den);
+        if (classify(r, d, a) != 1) return;
+        if (den < (1 << param)) {
+          for (int j = 0; j < 2; ++j)
+            for (int i = 0; i < 2; ++i) visit(2 * ix + i, 2 * iy + j, 2 * den);
+        } else {
+          resolveLeaf(r, d, a);
+        }
+      };
+      visit(0, 0, 1);
+      return;
+    }
+    const int den = sub == Subdivision::Uniform ? param : 1;
+    for (int j = 0; j < den; ++j)
+      for (int i = 0; i < den; ++i) {
+        const auto r = subRect(root, i, j, den);
+        if (classify(r, d, a) == 1) resolveLeaf(r, d, a);
+      }
+  }
+  double vssmBlocker(const std::array<int, 4>& rect, double d) const {
+    Acc a;
+    walk(rect, s_.blocker.subdivision,
+         s_.blocker.subdivision == Subdivision::Quadtree ? s_.blocker.quadtreeHeight : s_.blocker.uniformM, d, a);
+    double a1 = 0, z1 = 0;
+    if (a.vsm > 0) {
+      const double mean = a.ex / a.vsm, meanSq = a.ex2 / a.vsm;
+      const double p = chebyshev(mean, meanSq, d, s_.moments.minVariance);
+      if (1 - p > 1e-4) {
+        z1 = std::clamp((mean - p * d) / (1 - p), 0.0, d);
+        a1 = (1 - p) * a.vsm;
+      }
+    }
+    const double total = a1 + a.pcfOcc;
+    if (!(total > 1e-6)) return -1;
+    return std::clamp((z1 * a1 + a.pcfDepth) / total, 0.0, d);
+  }
+  double vssmVisibility(const std::array<int, 4>& rect, double d) const {
+    Acc a;
+    walk(rect, s_.kernel.subdivision,
+         s_.kernel.subdivision == Subdivision::Quadtree ? s_.kernel.quadtreeHeight : s_.kernel.uniformN, d, a);
+    double l = 1;
+    if (a.vsm > 0) l = reduceBleeding(s_, chebyshev(a.ex / a.vsm, a.ex2 / a.vsm, d, s_.moments.minVariance));
+    const double l1 = a.pcf > 0 ? 1 - a.pcfOcc / a.pcf : 1;
+    const double total = a.vsm + a.lit + a.pcf;
+    if (!(total > 0)) return 1;
+    return unit((l * a.vsm + a.lit + l1 * a.pcf) / total);
+  }
+
+  double earlyOut(const std::array<int, 4>& rect, double d) const {  // -1 = undecided
+    const int last = int(map_.size) - 1;
+    double lo = INFINITY, hi = -INFINITY;
+    for (int y = std::max(rect[1] - 1, 0); y <= std::min(rect[3] + 1, last); ++y)
+      for (int x = std::max(rect[0] - 1, 0); x <= std::min(rect[2] + 1, last); ++x) {
+        lo = std::min(lo, double(map_.at(x, y)));
+        hi = std::max(hi, double(map_.at(x, y)));
+      }
+    if (lo >= d) return 1;
+    if (hi < d) return 0;
+    return -1;
+  }
+
+  double visibility(const Geometry& g) const {
+    const bool penumbra = s_.kernel.size == KernelSize::Penumbra;
+    const int tech = s_.representation == Representation::Depth ? (s_.blocker.kind == BlockerKind::Search ? 1 : 0)
+                                                                : (s_.blocker.kind == BlockerKind::Moments ? 3 : 2);
+    if (s_.earlyOutMinMax) {
+      const double w = (tech == 1 || tech == 3 || penumbra) ? searchTexels(g) : s_.kernel.fixedTexels;
+      const double e = earlyOut(kernelRect(g.cx, g.cy, w), g.t);
+      if (e >= 0) return e;
+    }
+    if (tech == 3) {
+      ensureField();
+      const double zb = vssmBlocker(kernelRect(g.cx, g.cy, searchTexels(g)), g.t);
+      if (zb < 0) return 1;
+      const double w = penumbra ? penumbraTexels(g, zb) : s_.kernel.fixedTexels;
+      return vssmVisibility(kernelRect(g.cx, g.cy, w), g.t);
+    }
+    if (tech == 2) {
+      const double w = penumbra ? searchTexels(g) : s_.kernel.fixedTexels;
+      return unit(filteredVisibility(g, kernelRect(g.cx, g.cy, w), g.t));
+    }
+    // Depth representation, grid pattern, fixed kernel or the whole search region.
+    const double w = penumbra ? searchTexels(g) : s_.kernel.fixedTexels;
+    return pcfGrid(g.cx, g.cy, w, g.t, std::max(1, s_.sampling.gridN));
+  }
+
+ private:
+  const FilterSpec& s_;
+  const DepthMap& map_;
+  LightFrame light_;
+  double scale_;
+  std::vector<double> splits_ = splitsOf(s_);
+  const MomentsField* field_;
+};
+
+}  // namespace
+
+std::vector<double> warpMoments(const FilterSpec& s, double d) {
+  const double cp = s.moments.positiveExponent, cn = s.moments.negativeExponent;
+  switch (s.moments.warp) {
+    case Warp::Linear:
+      return {d, d * d, 0, 0};
+    case Warp::Exp:
+      return {std::exp(cp * (d - 1)), 0, 0, 0};
+    case Warp::Evsm2: {
+      const double e = std::exp(cp * (d - 1));
+      return {e, e * e, 0, 0};
+    }
+    case Warp::Evsm4: {
+      const double ep = std::exp(cp * (d - 1)), en = std::exp(-cn * (d - 1));
+      return {ep, ep * ep, -en, en * en};
+    }
+    case Warp::PowerCdf:
+      return {d, d, d, 0};
+  }
+  return {0, 0, 0, 0};
+}
+
+MomentsField::MomentsField(const FilterSpec& s, const DepthMap& map) : size(map.size), layers(s.moments.layers) {
+  const size_t n = size_t(size) * size;
+  raw_.assign(n * layers * 4, 0.0);
+  const auto splits = splitsOf(s);
+  for (int l = 0; l < layers; ++l)
+    for (size_t i = 0; i < n; ++i) {
+      double d = map.depth[i];
+      if (layers > 1) {
+        const double p = splits[l] - s.moments.overlap, q = splits[l + 1] + s.moments.overlap;
+        d = clamp01((d - p) / std::max(q - p, 1e-6));
+      }
+      const auto m = warpMoments(s, d);
+      for (int c = 0; c < 4; ++c) raw_[(l * n + i) * 4 + c] = m[c];
+    }
+  blurred_ = raw_;
+  if (s.prefilter.blur != BlurKind::None && s.prefilter.blurRadius > 0) {
+    const int r = s.prefilter.blurRadius;
+    const auto w = blurWeights(s.prefilter.blur, r);
+    const bool pcdf = s.moments.warp == Warp::PowerCdf;
+    const int last = int(size) - 1;
+    for (int axis = 0; axis < 2; ++axis) {
+      std::vector<double> out(blurred_.size());
+      for (int l = 0; l < layers; ++l)
+        for (int y = 0; y <= last; ++y)
+          for (int x = 0; x <= last; ++x) {
+            auto at = [&](int k, int c) {
+              const int xx = axis == 0 ? std::clamp(x + k, 0, last) : x,
+                        yy = axis == 1 ? std::clamp(y + k, 0, last) : y;
+              return blurred_[((l * n) + size_t(yy) * size + xx) * 4 + c];
+            };
+            for (int c = 0; c < 4; ++c) {
+              double sum = w[0] * at(0, c), lo = at(0, c), hi = at(0, c);
+              for (int k = 1; k <= r; ++k) {
+                sum += w[k] * (at(-k, c) + at(k, c));
+                lo = std::min({lo, at(-k, c), at(k, c)});
+                hi = std::max({hi, at(-k, c), at(k, c)});
+              }
+              if (pcdf && c == 0) sum = lo;
+              if (pcdf && c == 1) sum = hi;
+              out[((l * n) + size_t(y) * size + x) * 4 + c] = sum;
+            }
+          }
+      blurred_ = std::move(out);
+    }
+  }
+  const size_t s1 = size + 1;
+  prefix_.assign(s1 * s1 * layers * 4, 0.0);
+  for (int l = 0; l < layers; ++l)
+    for (uint32_t y = 0; y < size; ++y)
+      for (uint32_t x = 0; x < size; ++x)
+        for (int c = 0; c < 4; ++c) {
+          auto P = [&](size_t xx, size_t yy) -> double& { return prefix_[((l * s1 * s1) + yy * s1 + xx) * 4 + c]; };
+          P(x + 1, y + 1) = raw_[((l * n) + size_t(y) * size + x) * 4 + c] + P(x, y + 1) + P(x + 1, y) - P(x, y);
+        }
+}
+
+std::vector<double> MomentsField::boxMean(int x0, int y0, int x1, int y1, int layer) const {
+  const size_t s1 = size + 1;
+  std::vector<double> out(4, 0.0);
+  const double area = double(x1 - x0 + 1) * (y1 - y0 + 1);
+  if (area <= 0) return out;
+  for (int c = 0; c < 4; ++c) {
+    auto P = [&](int xx, int yy) { return prefix_[((layer * s1 * s1) + size_t(yy) * s1 + size_t(xx)) * 4 + c]; };
+    out[c] = (P(x1 + 1, y1 + 1) - P(x0, y1 + 1) - P(x1 + 1, y0) + P(x0, y0)) / area;
+  }
+  return out;
+}
+
+std::vector<double> MomentsField::texel(int x, int y, int layer) const {
+  const int last = int(size) - 1;
+  x = std::clamp(x, 0, last);
+  y = std::clamp(y, 0, last);
+  const size_t i = (size_t(layer) * size * size + size_t(y) * size + x) * 4;
+  return {blurred_[i], blurred_[i + 1], blurred_[i + 2], blurred_[i + 3]};
+}
+
+bool intentModels(const FilterSpec& s) {
+  if (s.contact.enabled || s.bias.kind == BiasKind::NormalOffset) return false;
+  if (s.representation == Representation::Depth)
+    return s.sampling.pattern == PcfPattern::Grid && s.blocker.kind == BlockerKind::None;
+  if (s.prefilter.mips && s.storage.sat == SatKind::None) return false;
+  if (s.moments.layers > 1 && s.moments.split == SplitPlacement::Lloyd) return false;
+  if (s.blocker.kind == BlockerKind::Search) return false;
+  return true;
+}
+
+IntentReference::IntentReference(const FilterSpec& spec, const DepthMap& map, const LightFrame& light)
+    : spec_(spec), map_(map), light_(light) {
+  if (intentModels(spec) && spec.representation == Representation::Moments)
+    field_ = std::make_unique<MomentsField>(spec, map);
+}
+IntentReference::~IntentReference() = default;
+
+std::vector<double> IntentReference::operator()(const Receiver& r) const {
+  const FilterSpec& s = spec_;
+  const DepthMap& map = map_;
+  const LightFrame& light = light_;
+  if (!intentModels(s)) return {};
+  // Outside the shadow map's frustum nothing was rendered that could shadow it (lit).
+  if (!(r.u >= 0 && r.u <= 1 && r.v >= 0 && r.v <= 1)) return {1.0};
+  const auto p = receiverPosition(light, r);
+  Geometry g;
+  g.cx = r.u * map.size;
+  g.cy = r.v * map.size;
+  g.zr = std::max(p[2], light.nearZ);
+  g.lightWidth = s.light.shape == LightShape::Point ? 0.0 : (s.light.sizeFromScene ? light.lightWidth : s.light.size);
+  double bias = s.bias.constant;
+  if (s.bias.kind == BiasKind::SlopeScaled) {
+    std::array<double, 3> n;
+    const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    if (r.normal)
+      n = *r.normal;
+    else
+      n = {-p[0] / len, -p[1] / len, -p[2] / len};
+    const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * len;
+    const double ndotl = nl > 0 ? clamp01(-(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / nl) : 0.0;
+    bias = std::max(s.bias.slope * (1 - ndotl), s.bias.constant);
+  }
+  g.t = gpuReceiverDepth(light, r) - bias;
+  std::vector<double> out;
+  for (double scale : {1.0, 1.0 + 2e-4, 1.0 - 2e-4}) {
+    const double v = Evaluator(s, map, light, scale, field_.get()).visibility(g);
+    if (std::none_of(out.begin(), out.end(), [&](double o) { return o == v; })) out.push_back(v);
+  }
+  return out;
+}
+
+}  // namespace shadowc::validation
