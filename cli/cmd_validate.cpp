@@ -8,7 +8,7 @@ namespace shadowc::cli {
 CommandRunner registerValidate(CLI::App& app) {
   auto o = std::make_shared<ValidationOptions>();
   CLI::App* sub = app.add_subcommand("validate", "Run a filter on a scene: per-pass GPU times and error vs. ray tracing");
-  sub->add_option("filter", o->filterPath, "Filter description (.shadow)")->required();
+  sub->add_option("filter", o->filterPath, "Filter description (.shadow), or a compiled manifest.json / its directory")->required();
   sub->add_option("--scene", o->scene, "Built-in scene name or scene .json file")->required();
   sub->add_option("--size", o->size, "Screen width and height in pixels")->capture_default_str();
   sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();

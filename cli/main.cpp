@@ -2,6 +2,7 @@
 // lavapipe against a ray-traced ground truth. See docs/cli.md.
 #include <cstdio>
 #include <exception>
+#include <string_view>
 #include <utility>
 #include <vector>
 
@@ -35,7 +36,13 @@ int main(int argc, char** argv) {
       if (sub->parsed()) return run();
   } catch (const std::exception& e) {
     std::fflush(stdout);
-    fmt::print(stderr, "shadowc: error: {}\n", e.what());
+    // Errors that already name their place ("scene.json:1:28: error: ...", glslc form) are
+    // printed as they are; the rest get the program's name.
+    const std::string_view what = e.what();
+    if (what.find(": error: ") != std::string_view::npos)
+      fmt::print(stderr, "{}\n", what);
+    else
+      fmt::print(stderr, "shadowc: error: {}\n", what);
     return 1;
   }
   return 1;

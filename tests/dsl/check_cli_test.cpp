@@ -1,6 +1,5 @@
 // `shadowc check` end to end: exit codes 0 / 1 / 2, -Werror, --print-spec.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <cstdlib>
@@ -11,17 +10,11 @@
 namespace {
 struct CliRun {
   int code;
-  std::string out;
+  std::string out;  // stdout then stderr
 };
 CliRun run(const std::string& args) {
-  const std::string cmd = std::string(SHADOWC_BINARY) + " check " + args + " 2>&1";
-  CliRun r{0, ""};
-  FILE* p = popen(cmd.c_str(), "r");
-  char buf[4096];
-  for (size_t n; (n = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  const int status = pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  const shadowc::test::CliResult r = shadowc::test::runShadowc("check " + args);
+  return {r.code, r.out + r.err};
 }
 std::string path(const std::string& rel) { return (shadowc::test::sourceDir() / rel).string(); }
 }  // namespace

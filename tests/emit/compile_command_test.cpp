@@ -1,6 +1,5 @@
 // `shadowc compile` end to end through the executable: flags, depfiles, errors, atomicity.
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 
 #include <cstdio>
 #include <fstream>
@@ -15,15 +14,11 @@ struct CliRun {
   std::string out;
 };
 
+// stdout in the result, stderr into `stderrFile` (the tests read it when they need it).
 CliRun shadowc(const std::string& args, const std::filesystem::path& stderrFile) {
-  const std::string cmd = std::string(SHADOWC_BINARY) + " " + args + " 2>" + stderrFile.string();
-  CliRun r{0, {}};
-  FILE* p = ::popen(cmd.c_str(), "r");
-  char buf[4096];
-  for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
-  const int status = ::pclose(p);
-  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  return r;
+  const test::CliResult r = test::runShadowc(args);
+  std::ofstream(stderrFile, std::ios::binary) << r.err;
+  return {r.code, r.out};
 }
 
 const std::string kSample = test::samplePath("vssm_adaptive").string();

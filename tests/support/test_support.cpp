@@ -5,7 +5,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <cstdio>
 
 namespace shadowc::test {
 
@@ -49,6 +52,21 @@ std::string compareGolden(const std::filesystem::path& golden, const std::string
              (ga ? la : "<eof>") + "' (SHADOWC_UPDATE_GOLDEN=1 rewrites it after review)";
   }
   return golden.string() + ": differs";
+}
+
+CliResult runShadowc(const std::string& args, const std::string& env) {
+  const auto errFile = freshTempDir("cli-stderr") / "stderr";
+  const std::string cmd = env + (env.empty() ? "" : " ") + SHADOWC_BINARY + " " + args + " 2>" + errFile.string();
+  CliResult r;
+  FILE* p = ::popen(cmd.c_str(), "r");
+  if (!p) return r;
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, n);
+  const int status = ::pclose(p);
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.err = readFile(errFile);
+  std::filesystem::remove_all(errFile.parent_path());
+  return r;
 }
 
 }  // namespace shadowc::test

@@ -15,4 +15,12 @@ std::string readFile(const std::filesystem::path& p);
 // Returns an empty string on match, else a short diff description.
 std::string compareGolden(const std::filesystem::path& golden, const std::string& actual);
 
+// Runs the shadowc executable (SHADOWC_BINARY) with `args` (shell words), stdout and stderr
+// captured apart. `env` is prepended as shell assignments, e.g. "VK_ICD_FILENAMES=/none".
+struct CliResult {
+  int code = -1;  // exit status, -1 when killed by a signal
+  std::string out, err;
+};
+CliResult runShadowc(const std::string& args, const std::string& env = "");
+
 }  // namespace shadowc::test

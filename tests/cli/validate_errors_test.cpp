@@ -1,0 +1,98 @@
+// `shadowc validate` with bad input: each case gives ONE clear message on stderr and a non-zero
+// exit (issue 4). The sibling runs a good invocation to prove that the harness sees success, so
+// the failures above are the inputs' doing, not a broken test set-up.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "support/test_support.h"
+
+namespace shadowc {
+namespace {
+
+const std::string kFilter = (test::sourceDir() / "samples/filters/pcf_grid5x5.shadow").string();
+// Small, so a run that gets through is quick.
+const std::string kSmall = " --size 32 --map 256 --samples 2 --runs 1 --warmup 0 --no-cache";
+
+int errorLines(const std::string& err) {
+  int n = 0;
+  for (size_t at = 0; (at = err.find("error:", at)) != std::string::npos; ++at) ++n;
+  return n;
+}
+
+void expectOneError(const test::CliResult& r, const std::string& phrase) {
+  EXPECT_NE(r.code, 0) << r.out << r.err;
+  EXPECT_EQ(errorLines(r.err), 1) << r.err;
+  EXPECT_NE(r.err.find(phrase), std::string::npos) << "expected '" << phrase << "' in:\n" << r.err;
+  EXPECT_EQ(r.out.find("rmse"), std::string::npos) << "no report after an error";
+}
+
+std::filesystem::path writeTemp(const std::string& tag, const std::string& name, const std::string& text) {
+  const auto path = test::freshTempDir(tag) / name;
+  std::ofstream(path, std::ios::binary) << text;
+  return path;
+}
+
+TEST(ValidateErrors, UnknownSceneName) {
+  expectOneError(test::runShadowc("validate " + kFilter + " --scene two_plane" + kSmall), "unknown scene 'two_plane'");
+}
+
+TEST(ValidateErrors, MissingSceneFile) {
+  expectOneError(test::runShadowc("validate " + kFilter + " --scene /nonexistent/scene.json" + kSmall),
+                 "scene file not found");
+}
+
+TEST(ValidateErrors, MalformedSceneFile) {
+  const auto scene = writeTemp("bad-scene", "bad.json", "{ \"camera\": { \"eye\": [0, 1, ");
+  expectOneError(test::runShadowc("validate " + kFilter + " --scene " + scene.string() + kSmall), "bad.json");
+}
+
+TEST(ValidateErrors, MeshThatFailsToLoad) {
+  const auto dir = test::freshTempDir("bad-mesh");
+  std::ofstream(dir / "broken.obj") << "this is not an OBJ file\n\x01\x02\x03\n";
+  std::ofstream(dir / "scene.json") << R"({
+    "camera": {"eye": [0, 4, 6], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y": 45},
+    "light": {"shape": "rect", "position": [0, 8, 0], "direction": [0, -1, 0], "up": [0, 0, 1], "size": 1},
+    "objects": [{"type": "mesh", "path": "broken.obj"}]
+  })";
+  expectOneError(test::runShadowc("validate " + kFilter + " --scene " + (dir / "scene.json").string() + kSmall),
+                 "cannot load mesh");
+}
+
+TEST(ValidateErrors, ManifestFromAnotherVersion) {
+  const auto dir = test::freshTempDir("old-manifest");
+  const test::CliResult compiled = test::runShadowc("compile " + kFilter + " -O0 -o " + dir.string());
+  ASSERT_EQ(compiled.code, 0) << compiled.err;
+  std::string manifest = test::readFile(dir / "manifest.json");
+  const std::string current = "\"format_version\": 1";
+  ASSERT_NE(manifest.find(current), std::string::npos);
+  manifest.replace(manifest.find(current), current.size(), "\"format_version\": 99");
+  std::ofstream(dir / "manifest.json", std::ios::binary) << manifest;
+  expectOneError(test::runShadowc("validate " + dir.string() + " --scene two_planes" + kSmall),
+                 "format version 99 is not supported");
+}
+
+TEST(ValidateErrors, NoVulkanDeviceAtAll) {
+  // The loader finds no driver when pointed at a manifest that does not exist.
+  expectOneError(test::runShadowc("validate " + kFilter + " --scene two_planes" + kSmall,
+                                  "VK_ICD_FILENAMES=/nonexistent/icd.json VK_DRIVER_FILES=/nonexistent/icd.json"),
+                 "no Vulkan");
+}
+
+TEST(ValidateErrors, SiblingAGoodRunSucceedsAndReports) {
+  const test::CliResult r = test::runShadowc("validate " + kFilter + " --scene two_planes" + kSmall);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rmse"), std::string::npos) << r.out;
+  EXPECT_EQ(errorLines(r.err), 0) << r.err;
+}
+
+TEST(ValidateErrors, SiblingACompiledManifestRunsToo) {
+  const auto dir = test::freshTempDir("good-manifest");
+  ASSERT_EQ(test::runShadowc("compile " + kFilter + " -O0 -o " + dir.string()).code, 0);
+  const test::CliResult r = test::runShadowc("validate " + (dir / "manifest.json").string() + " --scene two_planes" + kSmall);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("filter   pcf_grid5x5"), std::string::npos) << r.out;
+}
+
+}  // namespace
+}  // namespace shadowc
