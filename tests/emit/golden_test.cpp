@@ -25,6 +25,9 @@ void checkGoldens(const FilterSpec& spec) {
 }
 
 TEST(EmitGolden, VssmAdaptiveSample) { checkGoldens(test::loadSample("vssm_adaptive")); }
+TEST(EmitGolden, PcfPoisson16Sample) { checkGoldens(test::loadSample("pcf_poisson16")); }
+TEST(EmitGolden, LayeredVsmUniformSample) { checkGoldens(test::loadSample("layered_vsm_uniform")); }
+TEST(EmitGolden, PcssPoissonSample) { checkGoldens(test::loadSample("pcss_poisson")); }
 TEST(EmitGolden, PcfDepthOnly) { checkGoldens(test::pcfSpec()); }
 TEST(EmitGolden, VssmInt32WithMinMax) { checkGoldens(test::vssmInt32Spec()); }
 TEST(EmitGolden, LayeredEvsm4Fp16) { checkGoldens(test::layeredEvsmSpec()); }
