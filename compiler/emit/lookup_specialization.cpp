@@ -12,6 +12,7 @@
 
 #include "emit/poisson_disk.h"
 #include "emit/quadtree_tables.h"
+#include "emit/template_codes.h"
 
 namespace shadowc {
 
@@ -30,17 +31,6 @@ int technique(const FilterSpec& s) {
   // Values mirror templates/lookup/shadowc_lookup.glsl SHADOWC_TECHNIQUE_*.
   if (s.representation == Representation::Depth) return s.blocker.kind == BlockerKind::Search ? 1 : 0;
   return s.blocker.kind == BlockerKind::Moments ? 3 : 2;
-}
-
-int warpValue(Warp w) {
-  switch (w) {
-    case Warp::Linear: return 0;
-    case Warp::Exp: return 1;
-    case Warp::Evsm2: return 2;
-    case Warp::Evsm4: return 3;
-    case Warp::PowerCdf: return 4;
-  }
-  return 0;
 }
 
 int subdivisionValue(Subdivision s) {
@@ -133,8 +123,8 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
 
   // ---- moments ----------------------------------------------------------------------------
   if (moments) {
-    defInt("SHADOWC_WARP", warpValue(s.moments.warp));
-    defInt("SHADOWC_SAT_KIND", static_cast<int>(s.storage.sat));
+    defInt("SHADOWC_WARP", warpDefineValue(s.moments.warp));
+    defInt("SHADOWC_SAT_KIND", satKindDefineValue(s.storage.sat));
     defInt("SHADOWC_MIPS", s.prefilter.mips ? 1 : 0);
     defFloat("SHADOWC_EXP_POSITIVE", s.moments.positiveExponent);
     defFloat("SHADOWC_EXP_NEGATIVE", s.moments.negativeExponent);

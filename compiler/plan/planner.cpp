@@ -4,6 +4,7 @@
 #include <cmath>
 #include <string>
 
+#include "emit/template_codes.h"
 #include "plan/glsl_literal.h"
 #include "plan/image_formats.h"
 
@@ -15,35 +16,6 @@ constexpr SizeRule kScreen{SizeDomain::Screen, 0};
 
 using Defines = std::vector<std::pair<std::string, std::string>>;
 
-int warpCode(Warp w) {  // moments_warp.glsl SHADOWC_WARP
-  switch (w) {
-    case Warp::Linear:
-      return 0;
-    case Warp::Exp:
-      return 1;
-    case Warp::Evsm2:
-      return 2;
-    case Warp::Evsm4:
-      return 3;
-    case Warp::PowerCdf:
-      return 4;
-  }
-  return 0;
-}
-
-int satCode(SatKind k) {  // sat_common.glsl SHADOWC_SAT_KIND
-  switch (k) {
-    case SatKind::Int32:
-      return 1;
-    case SatKind::Fp32Centered:
-      return 2;
-    case SatKind::Fp32Naive:
-      return 3;
-    case SatKind::None:
-      break;
-  }
-  return 0;
-}
 
 // Separable blur weights w[0..r], w[k] = w[-k], summing to 1 over [-r, r].
 // Gaussian sigma = r/2 keeps the tails at the window edge near 2 sigma.
@@ -93,7 +65,7 @@ class Planner {
   }
 
   Defines momentsDefines() const {
-    return {{"SHADOWC_WARP", std::to_string(warpCode(spec_.moments.warp))},
+    return {{"SHADOWC_WARP", std::to_string(warpDefineValue(spec_.moments.warp))},
             {"SHADOWC_EXP_POSITIVE", glslFloat(spec_.moments.positiveExponent)},
             {"SHADOWC_EXP_NEGATIVE", glslFloat(spec_.moments.negativeExponent)},
             {"SHADOWC_LAYERS", std::to_string(spec_.moments.layers)},
@@ -164,7 +136,7 @@ class Planner {
   void planSat(int layers) {
     addImage({"sat", satFormat(spec_), kMap, 1, layers, ImageRole::Internal, false});
     Defines d = momentsDefines();
-    d.emplace_back("SHADOWC_SAT_KIND", std::to_string(satCode(spec_.storage.sat)));
+    d.emplace_back("SHADOWC_SAT_KIND", std::to_string(satKindDefineValue(spec_.storage.sat)));
     d.emplace_back("SHADOWC_SAT_FORMAT", glslQualifier(satFormat(spec_)));
     Pass& rows = addPass("sat_rows", "sat", {64, 1, 1}, {kMap, DispatchMode::Rows},
                          {"passes/sat_rows.comp", "sat_rows", d, false});
