@@ -16,21 +16,6 @@ constexpr SizeRule kScreen{SizeDomain::Screen, 0};
 
 using Defines = std::vector<std::pair<std::string, std::string>>;
 
-
-// Separable blur weights w[0..r], w[k] = w[-k], summing to 1 over [-r, r].
-// Gaussian sigma = r/2 keeps the tails at the window edge near 2 sigma.
-std::vector<double> blurWeights(BlurKind kind, int r) {
-  std::vector<double> w(static_cast<size_t>(r) + 1, 1.0);
-  if (kind == BlurKind::Gaussian) {
-    const double sigma = std::max(0.5, r / 2.0);
-    for (int k = 0; k <= r; ++k) w[k] = std::exp(-(k * k) / (2.0 * sigma * sigma));
-  }
-  double total = w[0];
-  for (int k = 1; k <= r; ++k) total += 2.0 * w[k];
-  for (double& x : w) x /= total;
-  return w;
-}
-
 class Planner {
  public:
   explicit Planner(const FilterSpec& spec) : spec_(spec) { graph_.manifest.filter = spec.name; }
@@ -186,6 +171,20 @@ int pyramidLevels(const FilterSpec& spec) {
   const double texels = std::max(2.0, spec.kernel.maxTexels);
   const int k = static_cast<int>(std::ceil(std::log2(texels) - 1e-9));
   return std::clamp(k, 1, 12) + 1;
+}
+
+// Separable blur weights w[0..r], w[k] = w[-k], summing to 1 over [-r, r].
+// Gaussian sigma = r/2 keeps the tails at the window edge near 2 sigma.
+std::vector<double> blurWeights(BlurKind kind, int r) {
+  std::vector<double> w(static_cast<size_t>(r) + 1, 1.0);
+  if (kind == BlurKind::Gaussian) {
+    const double sigma = std::max(0.5, r / 2.0);
+    for (int k = 0; k <= r; ++k) w[k] = std::exp(-(k * k) / (2.0 * sigma * sigma));
+  }
+  double total = w[0];
+  for (int k = 1; k <= r; ++k) total += 2.0 * w[k];
+  for (double& x : w) x /= total;
+  return w;
 }
 
 std::vector<double> layerSplits(const FilterSpec& spec) {

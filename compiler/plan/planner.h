@@ -22,4 +22,8 @@ int pyramidLevels(const FilterSpec& spec);
 // else uniform. (Lloyd placement computes them on the GPU: lloyd pass, `splits` image.)
 std::vector<double> layerSplits(const FilterSpec& spec);
 
+// Separable blur weights w[0..r] (w[-k] = w[k], summing to 1 over [-r, r]) that the blur passes
+// fold in; the stability suite's double-precision reference uses the same weights.
+std::vector<double> blurWeights(BlurKind kind, int r);
+
 }  // namespace shadowc

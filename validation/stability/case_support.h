@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -11,6 +12,12 @@
 #include "validation/stability/stability_suite.h"
 
 namespace shadowc::validation {
+
+// A case with the suite's label. `applies` says which user filters (`--filter F`) fit it; leave
+// it empty for fixed demonstrations that run only their own filters.
+StabilityCase makeCase(const std::string& name, const std::string& what, std::vector<FilterSpec> filters,
+                       std::function<bool(const FilterSpec&)> applies,
+                       std::function<CaseResult(SuiteContext&, const FilterSpec&)> run);
 
 // Checked spec of a library filter: `filter NAME {` BODY `}`.
 FilterSpec libraryFilter(const std::string& name, const std::string& body);

@@ -13,19 +13,6 @@ namespace {
 
 constexpr uint32_t kMap = 128;
 
-StabilityCase make(const std::string& name, const std::string& what, std::vector<FilterSpec> filters,
-                   std::function<bool(const FilterSpec&)> applies,
-                   std::function<CaseResult(SuiteContext&, const FilterSpec&)> run) {
-  StabilityCase c;
-  c.name = name;
-  c.label = "stability";
-  c.what = what;
-  c.filters = std::move(filters);
-  c.appliesTo = std::move(applies);
-  c.run = std::move(run);
-  return c;
-}
-
 // fp32 evaluation of the same formulas; int32 SATs add the 16.16 quantization of the means
 // (cases_estimator.cpp); PCF counts are exact (ties are avoided by the map's random depths).
 CaseResult bounded(const FilterSpec& s) {
@@ -71,11 +58,11 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
   const auto all = geometryFilters();
   const auto any = [](const FilterSpec&) { return true; };
 
-  out.push_back(make("kernel_at_border", "receivers on the map's edges and corners, noise map", all, any,
-                     [](SuiteContext& ctx, const FilterSpec& s) {
-                       return evaluate(ctx, bounded(s), s, noiseMap(kMap, 11, 0.1, 0.9), borderReceivers(kMap, 0.6),
-                                       LightFrame{});
-                     }));
+  out.push_back(makeCase("kernel_at_border", "receivers on the map's edges and corners, noise map", all, any,
+                         [](SuiteContext& ctx, const FilterSpec& s) {
+                           return evaluate(ctx, bounded(s), s, noiseMap(kMap, 11, 0.1, 0.9), borderReceivers(kMap, 0.6),
+                                           LightFrame{});
+                         }));
 
   const std::vector<FilterSpec> huge = {
       libraryFilter("vsm_sat_fixed63_on16", "moments linear\nstorage sat(int32)\nkernel fixed(63)"),
@@ -84,12 +71,13 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
           "vssm_max255_on16",
           "moments linear\nstorage sat(int32)\nblocker moments\nkernel uniform(4, max: 255)\nfallback pcf(2x2)"),
   };
-  out.push_back(make("kernel_larger_than_map", "16x16 map, kernels 17..255 texels (light width 50)", huge, any,
-                     [](SuiteContext& ctx, const FilterSpec& s) {
-                       LightFrame light;
-                       light.lightWidth = 50;
-                       return evaluate(ctx, bounded(s), s, noiseMap(16, 12, 0.1, 0.9), borderReceivers(16, 0.7), light);
-                     }));
+  out.push_back(makeCase("kernel_larger_than_map", "16x16 map, kernels 17..255 texels (light width 50)", huge, any,
+                         [](SuiteContext& ctx, const FilterSpec& s) {
+                           LightFrame light;
+                           light.lightWidth = 50;
+                           return evaluate(ctx, bounded(s), s, noiseMap(16, 12, 0.1, 0.9), borderReceivers(16, 0.7),
+                                           light);
+                         }));
 
   const std::vector<FilterSpec> one = {
       libraryFilter("vsm_sat_fixed1", "moments linear\nstorage sat(int32)\nkernel fixed(1)"),
@@ -97,13 +85,13 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
       libraryFilter("vssm_tiny_light",
                     "moments linear\nstorage sat(int32)\nblocker moments\nkernel uniform(4)\nfallback pcf(2x2)"),
   };
-  out.push_back(make("kernel_one_texel", "kernels of one texel (light width 1e-5 for VSSM)", one, any,
-                     [](SuiteContext& ctx, const FilterSpec& s) {
-                       LightFrame light;
-                       light.lightWidth = 1e-5;
-                       return evaluate(ctx, bounded(s), s, noiseMap(kMap, 13, 0.1, 0.9), borderReceivers(kMap, 0.5),
-                                       light);
-                     }));
+  out.push_back(makeCase("kernel_one_texel", "kernels of one texel (light width 1e-5 for VSSM)", one, any,
+                         [](SuiteContext& ctx, const FilterSpec& s) {
+                           LightFrame light;
+                           light.lightWidth = 1e-5;
+                           return evaluate(ctx, bounded(s), s, noiseMap(kMap, 13, 0.1, 0.9), borderReceivers(kMap, 0.5),
+                                           light);
+                         }));
 
   // Quadtree of height H over a kernel of exactly 2^H texels (max: 2^H, a wide light): the
   // leaves are single texels.
@@ -114,36 +102,36 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
                       fmt::format("moments linear\nstorage sat(int32)\nblocker moments(quadtree(height: {0}))\n"
                                   "kernel quadtree(height: {0}, max: {1})\nfallback pcf(1x1)",
                                   h, w))};
-    out.push_back(make(fmt::format("quadtree_height_{}_single_texel_leaves", h),
-                       fmt::format("kernel {0}x{0} texels, height {1}: leaves of one texel", w, h), f, isVssm,
-                       [](SuiteContext& ctx, const FilterSpec& s) {
-                         LightFrame light;
-                         light.lightWidth = 20;
-                         std::vector<Receiver> rs;
-                         for (int i = 0; i < 32; ++i)
-                           rs.push_back(atTexel(kMap, 10 + 3 * i, 100 - 2 * i, 0.55 + 0.01 * (i % 5)));
-                         return evaluate(ctx, bounded(s), s, noiseMap(kMap, 14, 0.3, 0.8), rs, light);
-                       }));
+    out.push_back(makeCase(fmt::format("quadtree_height_{}_single_texel_leaves", h),
+                           fmt::format("kernel {0}x{0} texels, height {1}: leaves of one texel", w, h), f, isVssm,
+                           [](SuiteContext& ctx, const FilterSpec& s) {
+                             LightFrame light;
+                             light.lightWidth = 20;
+                             std::vector<Receiver> rs;
+                             for (int i = 0; i < 32; ++i)
+                               rs.push_back(atTexel(kMap, 10 + 3 * i, 100 - 2 * i, 0.55 + 0.01 * (i % 5)));
+                             return evaluate(ctx, bounded(s), s, noiseMap(kMap, 14, 0.3, 0.8), rs, light);
+                           }));
   }
 
   // Height 0 passes the checker with W0502 but the lookup accepts 1..5: the emitter must reject
   // it with a message (never emit a broken shader).
   {
     StabilityCase c =
-        make("quadtree_height_0_rejected", "height 0: rejected with a message", {}, isVssm,
-             [](SuiteContext&, const FilterSpec& s) {
-               CaseResult r;
-               r.bound = 0;
-               r.boundReason = "rejection expected";
-               FilterSpec z = s;
-               z.kernel.quadtreeHeight = 0;
-               z.kernel.subdivision = Subdivision::Quadtree;
-               const FilterEmitResult e = emitFilter(z);
-               r.worstError = e.ok ? 1.0 : 0.0;
-               r.detail = e.ok ? "height 0 compiled (expected a rejection)" : "rejected: " + e.log.substr(0, 160);
-               settle(r);
-               return r;
-             });
+        makeCase("quadtree_height_0_rejected", "height 0: rejected with a message", {}, isVssm,
+                 [](SuiteContext&, const FilterSpec& s) {
+                   CaseResult r;
+                   r.bound = 0;
+                   r.boundReason = "rejection expected";
+                   FilterSpec z = s;
+                   z.kernel.quadtreeHeight = 0;
+                   z.kernel.subdivision = Subdivision::Quadtree;
+                   const FilterEmitResult e = emitFilter(z);
+                   r.worstError = e.ok ? 1.0 : 0.0;
+                   r.detail = e.ok ? "height 0 compiled (expected a rejection)" : "rejected: " + e.log.substr(0, 160);
+                   settle(r);
+                   return r;
+                 });
     c.filters = {libraryFilter(
         "vssm_quadtree_h0",
         "moments linear\nstorage sat(int32)\nblocker moments\nkernel quadtree(height: 0)\nfallback pcf(2x2)")};
@@ -152,22 +140,22 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
 
   // Depth ranges: far - near from 1e-3 to 1e4 world units.
   for (double range : {1e-3, 1e4}) {
-    out.push_back(make(fmt::format("depth_range_{:g}", range), fmt::format("near 1, far 1 + {:g}", range), all, any,
-                       [range](SuiteContext& ctx, const FilterSpec& s) {
-                         LightFrame light;
-                         light.farZ = light.nearZ + range;
-                         light.lightWidth = 0.5;
-                         CaseResult b = bounded(s);
-                         return evaluate(
-                             ctx, b, s, noiseMap(kMap, 15, 0.1, 0.9),
-                             [] {
-                               std::vector<Receiver> rs;
-                               for (int i = 0; i < 32; ++i)
-                                 rs.push_back(atTexel(kMap, 7 + 3 * i, 9 + 2 * i, 0.2 + 0.025 * i));
-                               return rs;
-                             }(),
-                             light);
-                       }));
+    out.push_back(makeCase(fmt::format("depth_range_{:g}", range), fmt::format("near 1, far 1 + {:g}", range), all, any,
+                           [range](SuiteContext& ctx, const FilterSpec& s) {
+                             LightFrame light;
+                             light.farZ = light.nearZ + range;
+                             light.lightWidth = 0.5;
+                             CaseResult b = bounded(s);
+                             return evaluate(
+                                 ctx, b, s, noiseMap(kMap, 15, 0.1, 0.9),
+                                 [] {
+                                   std::vector<Receiver> rs;
+                                   for (int i = 0; i < 32; ++i)
+                                     rs.push_back(atTexel(kMap, 7 + 3 * i, 9 + 2 * i, 0.2 + 0.025 * i));
+                                   return rs;
+                                 }(),
+                                 light);
+                           }));
   }
 
   // Grazing light: N.L -> 0 with a slope-scaled bias (pcss-blog.txt) and normal offset.
@@ -176,24 +164,24 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
       libraryFilter("vsm_slope_bias", "moments linear\nblur box(radius: 1)\nbias slope(0.005, constant: 0.001)"),
       libraryFilter("pcf_normal_offset", "depth\nsampling grid(3x3)\nbias normal_offset(1)"),
   };
-  out.push_back(make("grazing_light", "normals perpendicular to the light direction (N.L = 0 and 1e-7)", grazing, any,
-                     [](SuiteContext& ctx, const FilterSpec& s) {
-                       std::vector<Receiver> rs;
-                       const LightFrame light;
-                       for (int i = 0; i < 32; ++i) {
-                         Receiver r = atTexel(kMap, 5 + 3 * i, 64, 0.3 + 0.02 * i);
-                         const auto p = receiverPosition(light, r);
-                         // A unit vector perpendicular to the light ray p (N.L = 0), tilted by 1e-7 on odd i.
-                         std::array<double, 3> n = {p[2], 0.0, -p[0]};
-                         const double len = std::sqrt(n[0] * n[0] + n[2] * n[2]);
-                         const double tilt = (i & 1) ? 1e-7 : 0.0;
-                         const double pl = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-                         r.normal = std::array<double, 3>{n[0] / len - tilt * p[0] / pl, -tilt * p[1] / pl,
-                                                          n[2] / len - tilt * p[2] / pl};
-                         rs.push_back(r);
-                       }
-                       return evaluate(ctx, bounded(s), s, noiseMap(kMap, 16, 0.1, 0.9), rs, light);
-                     }));
+  out.push_back(makeCase("grazing_light", "normals perpendicular to the light direction (N.L = 0 and 1e-7)", grazing,
+                         any, [](SuiteContext& ctx, const FilterSpec& s) {
+                           std::vector<Receiver> rs;
+                           const LightFrame light;
+                           for (int i = 0; i < 32; ++i) {
+                             Receiver r = atTexel(kMap, 5 + 3 * i, 64, 0.3 + 0.02 * i);
+                             const auto p = receiverPosition(light, r);
+                             // A unit vector perpendicular to the light ray p (N.L = 0), tilted by 1e-7 on odd i.
+                             std::array<double, 3> n = {p[2], 0.0, -p[0]};
+                             const double len = std::sqrt(n[0] * n[0] + n[2] * n[2]);
+                             const double tilt = (i & 1) ? 1e-7 : 0.0;
+                             const double pl = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+                             r.normal = std::array<double, 3>{n[0] / len - tilt * p[0] / pl, -tilt * p[1] / pl,
+                                                              n[2] / len - tilt * p[2] / pl};
+                             rs.push_back(r);
+                           }
+                           return evaluate(ctx, bounded(s), s, noiseMap(kMap, 16, 0.1, 0.9), rs, light);
+                         }));
 }
 
 }  // namespace shadowc::validation

@@ -13,18 +13,6 @@
 namespace shadowc::validation {
 namespace {
 
-StabilityCase make(const std::string& name, const std::string& what, std::vector<FilterSpec> filters,
-                   std::function<CaseResult(SuiteContext&, const FilterSpec&)> run) {
-  StabilityCase c;
-  c.name = name;
-  c.label = "stability";
-  c.what = what;
-  c.filters = std::move(filters);
-  c.appliesTo = [](const FilterSpec&) { return false; };  // fixed demonstrations, no --filter
-  c.run = std::move(run);
-  return c;
-}
-
 // EVSM4 at the limit (ours, checked) and past it (naive, built past the checker after showing
 // that the checker rejects the same text with E0404).
 struct ExponentDemo {
@@ -87,46 +75,45 @@ void addNaiveCases(std::vector<StabilityCase>& out) {
       {"evsm4_sat_fp32_centered", "sat(fp32_centered)", 34.0, 40.0, 2048},
   };
   for (const ExponentDemo& d : demos)
-    out.push_back(make(fmt::format("exponent_limit_{}", d.name),
-                       fmt::format("EVSM4 negative exponent {} (limit) vs {} (past it) on {} storage, {}^2", d.ours,
-                                   d.naive, d.storage, d.map),
-                       {evsmSpec(d, d.ours, false), evsmSpec(d, d.naive, true)},
-                       [d](SuiteContext& ctx, const FilterSpec& s) { return exponentCase(ctx, s, d); }));
+    out.push_back(makeCase(fmt::format("exponent_limit_{}", d.name),
+                           fmt::format("EVSM4 negative exponent {} (limit) vs {} (past it) on {} storage, {}^2", d.ours,
+                                       d.naive, d.storage, d.map),
+                           {evsmSpec(d, d.ours, false), evsmSpec(d, d.naive, true)}, {},
+                           [d](SuiteContext& ctx, const FilterSpec& s) { return exponentCase(ctx, s, d); }));
 
   // VSSM eq. 4 at P -> 1 (vssm_blocker_p_to_1's map and receivers), guarded and unguarded.
   const std::string body = "moments linear\nstorage sat(int32)\nblocker moments\nkernel uniform(4)\nfallback pcf(2x2)";
   FilterSpec ours = libraryFilter("vssm_guarded", body);
   FilterSpec naive = libraryFilter("vssm_unguarded", body);
   naive.naiveUnguarded = true;
-  out.push_back(make("vssm_blocker_unguarded", "eq. 4 with and without the 1 - P guard, receivers at P -> 1",
-                     {ours, naive}, [](SuiteContext& ctx, const FilterSpec& s) {
-                       CaseResult r;
-                       r.naive = s.naiveUnguarded;
-                       // The naive pass writes eq. 4's raw blocker depth; a usable one lies in [0, t]
-                       // (t ~ 0.5), so the range check is [0, 1] as for visibility.
-                       r.bound = s.naiveUnguarded ? INFINITY : 2e-3;
-                       r.boundReason =
-                           s.naiveUnguarded ? "blocker depth must be finite and in [0, t]" : "as vssm_blocker_p_to_1";
-                       const double t = 0.5 + s.bias.constant;
-                       std::vector<Receiver> rs;
-                       for (double e : {0.0, 1e-6, 1e-5, 1e-4, 1e-3})
-                         for (int i = 0; i < 6; ++i) rs.push_back(atTexel(128, 17 + 19 * i, 23 + 13 * i, t + e));
-                       if (!s.naiveUnguarded) return evaluate(ctx, r, s, checkerMap(128, 0.3f, 0.7f), rs, LightFrame{});
-                       const CraftedResult run =
-                           runCrafted(ctx.vk, compileCached(s), checkerMap(128, 0.3f, 0.7f), rs, LightFrame{});
-                       r.filter = s.name;
-                       countValues(r, run.visibility);
-                       float lo = INFINITY, hi = -INFINITY;
-                       for (float v : run.visibility) {
-                         lo = std::min(lo, v);
-                         hi = std::max(hi, v);
-                       }
-                       r.worstError = NAN;
-                       r.detail = fmt::format("raw eq. 4 blocker depths: min {:.4g}, max {:.4g}, {} non-finite of {}",
-                                              lo, hi, r.nonFinite, r.values);
-                       settle(r);
-                       return r;
-                     }));
+  out.push_back(makeCase(
+      "vssm_blocker_unguarded", "eq. 4 with and without the 1 - P guard, receivers at P -> 1", {ours, naive}, {},
+      [](SuiteContext& ctx, const FilterSpec& s) {
+        CaseResult r;
+        r.naive = s.naiveUnguarded;
+        // The naive pass writes eq. 4's raw blocker depth; a usable one lies in [0, t]
+        // (t ~ 0.5), so the range check is [0, 1] as for visibility.
+        r.bound = s.naiveUnguarded ? INFINITY : 2e-3;
+        r.boundReason = s.naiveUnguarded ? "blocker depth must be finite and in [0, t]" : "as vssm_blocker_p_to_1";
+        const double t = 0.5 + s.bias.constant;
+        std::vector<Receiver> rs;
+        for (double e : {0.0, 1e-6, 1e-5, 1e-4, 1e-3})
+          for (int i = 0; i < 6; ++i) rs.push_back(atTexel(128, 17 + 19 * i, 23 + 13 * i, t + e));
+        if (!s.naiveUnguarded) return evaluate(ctx, r, s, checkerMap(128, 0.3f, 0.7f), rs, LightFrame{});
+        const CraftedResult run = runCrafted(ctx.vk, compileCached(s), checkerMap(128, 0.3f, 0.7f), rs, LightFrame{});
+        r.filter = s.name;
+        countValues(r, run.visibility);
+        float lo = INFINITY, hi = -INFINITY;
+        for (float v : run.visibility) {
+          lo = std::min(lo, v);
+          hi = std::max(hi, v);
+        }
+        r.worstError = NAN;
+        r.detail = fmt::format("raw eq. 4 blocker depths: min {:.4g}, max {:.4g}, {} non-finite of {}", lo, hi,
+                               r.nonFinite, r.values);
+        settle(r);
+        return r;
+      }));
 }
 
 }  // namespace shadowc::validation

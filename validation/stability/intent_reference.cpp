@@ -5,31 +5,13 @@
 #include <functional>
 #include <memory>
 
+#include "plan/planner.h"
+
 namespace shadowc::validation {
 namespace {
 
 double clamp01(double v) { return std::clamp(v, 0.0, 1.0); }
 double unit(double v) { return v >= 0.0 ? std::min(v, 1.0) : 0.0; }
-
-std::vector<double> blurWeights(BlurKind kind, int r) {  // compiler/plan/planner.cpp, in double
-  std::vector<double> w(size_t(r) + 1, 1.0);
-  if (kind == BlurKind::Gaussian) {
-    const double sigma = std::max(0.5, r / 2.0);
-    for (int k = 0; k <= r; ++k) w[k] = std::exp(-(k * k) / (2.0 * sigma * sigma));
-  }
-  double total = w[0];
-  for (int k = 1; k <= r; ++k) total += 2.0 * w[k];
-  for (double& x : w) x /= total;
-  return w;
-}
-
-std::vector<double> splitsOf(const FilterSpec& s) {
-  const int layers = s.moments.layers;
-  if (s.moments.splits.size() == size_t(layers + 1)) return s.moments.splits;
-  std::vector<double> out;
-  for (int i = 0; i <= layers; ++i) out.push_back(double(i) / layers);
-  return out;
-}
 
 // Chebyshev upper bound (chebyshev.glsl) and Lauritzen's linstep.
 double chebyshev(double mean, double meanSq, double t, double minVariance) {
@@ -326,7 +308,7 @@ class Evaluator {
   const DepthMap& map_;
   LightFrame light_;
   double scale_;
-  std::vector<double> splits_ = splitsOf(s_);
+  std::vector<double> splits_ = layerSplits(s_);
   const MomentsField* field_;
 };
 
@@ -356,7 +338,7 @@ std::vector<double> warpMoments(const FilterSpec& s, double d) {
 MomentsField::MomentsField(const FilterSpec& s, const DepthMap& map) : size(map.size), layers(s.moments.layers) {
   const size_t n = size_t(size) * size;
   raw_.assign(n * layers * 4, 0.0);
-  const auto splits = splitsOf(s);
+  const auto splits = layerSplits(s);
   for (int l = 0; l < layers; ++l)
     for (size_t i = 0; i < n; ++i) {
       double d = map.depth[i];

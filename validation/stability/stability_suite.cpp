@@ -11,6 +11,19 @@
 
 namespace shadowc::validation {
 
+StabilityCase makeCase(const std::string& name, const std::string& what, std::vector<FilterSpec> filters,
+                       std::function<bool(const FilterSpec&)> applies,
+                       std::function<CaseResult(SuiteContext&, const FilterSpec&)> run) {
+  StabilityCase c;
+  c.name = name;
+  c.label = "stability";
+  c.what = what;
+  c.filters = std::move(filters);
+  c.appliesTo = applies ? std::move(applies) : [](const FilterSpec&) { return false; };
+  c.run = std::move(run);
+  return c;
+}
+
 FilterSpec libraryFilter(const std::string& name, const std::string& body) {
   return specFromSource(fmt::format("filter {} {{\n{}\n}}\n", name, body), name);
 }
