@@ -26,6 +26,7 @@
 #include "runtime/scene/scene.h"
 #include "spec/load_filter.h"
 #include "support/test_support.h"
+#include "validation/stability/crafted_run.h"
 
 namespace shadowc::test {
 
@@ -74,19 +75,8 @@ inline const CompiledFilter* compileFilterCached(const std::string& label, const
 // known uv and depth: tanHalfFov 1, near 1, far 11.
 inline constexpr float kNear = 1.0f, kFar = 11.0f;
 inline ShadowcFrame identityFrame(uint32_t map, uint32_t w, uint32_t h, float lightWidth) {
-  ShadowcFrame f{};
-  for (int i = 0; i < 4; ++i) f.lightView[i * 5] = 1.0f;
-  f.lightParams[0] = 1.0f;
-  f.lightParams[1] = kNear;
-  f.lightParams[2] = kFar;
-  f.lightParams[3] = lightWidth;
-  f.mapInfo[0] = float(map);
-  f.mapInfo[1] = 1.0f / float(map);
-  f.screenInfo[0] = float(w);
-  f.screenInfo[1] = float(h);
-  f.screenInfo[2] = 1.0f / float(w);
-  f.screenInfo[3] = 1.0f / float(h);
-  return f;
+  // The stability suite builds the same frame; one definition serves both.
+  return validation::makeFrame(validation::LightFrame{1.0, kNear, kFar, lightWidth}, map, w, h);
 }
 
 // A receiver at shadow-map uv (u, v) and normalized depth d, facing the light centre (so a
