@@ -1,0 +1,73 @@
+// The compiler driver: the one place that runs the stages in order (DESIGN.md "The pipeline"):
+//   load (dsl/ lexer + parser) -> check (spec/) -> plan (plan/) -> emit (emit/) -> backend
+// for every caller — the CLI, validation/, the tests, bench/, `sweep` and `plan`. Nothing else
+// wires stages together (tests/architecture keeps it so). The result lives in memory; writing
+// it to disk is a separate step (writeArtifact), so nothing reaches the disk unless every
+// shader compiled and validated.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "emit/content_hash.h"   // EmittedFile
+#include "manifest/compiled_passes.h"
+#include "manifest/manifest.h"
+#include "plan/pass_graph.h"
+#include "spec/filter_spec.h"
+#include "spec/load_filter.h"    // Diagnostic
+
+namespace shadowc::driver {
+
+// Where the driver stops: `shadowc check` stops after Check, `--print-plan` / -M after Plan.
+enum class Stage { Check, Plan, Emit };
+
+// What `--emit` keeps when the artifact is written (the artifact in memory always has all).
+enum class OutputKind { Glsl, Spirv, Manifest };
+
+struct Options {
+  bool optimize = true;           // -O (default) / -O0
+  bool warningsAsErrors = false;  // -Werror: front-end and GLSL warnings fail the compile
+  Stage stopAfter = Stage::Emit;
+};
+
+// A compiled filter, in memory.
+struct Artifact {
+  FilterSpec spec;                 // the checked, normalized spec
+  PassGraph plan;                  // the planner's output (passes, images, typed values)
+  Manifest manifest;               // as written to manifest.json (spec, hash, shade included)
+  std::vector<EmittedFile> files;  // sorted by name: <stem>.glsl/.spv, <filter>_lookup.glsl, manifest.json
+  // The bytes of one output file, or nullptr.
+  const std::string* file(const std::string& name) const;
+  // The manifest and its .spv files, for the run harness (runtime/harness/run_harness.h).
+  CompiledPasses passes() const;
+};
+
+struct Result {
+  std::vector<Diagnostic> diagnostics;  // front end (checker) diagnostics, errors and warnings
+  std::string log;                      // everything to show the user: formatted diagnostics + backend log
+  std::optional<FilterSpec> spec;       // set once Check passed
+  std::optional<PassGraph> plan;        // set once Plan ran
+  std::optional<Artifact> artifact;     // set once Emit succeeded
+  // True when the requested stage completed without errors.
+  bool ok = false;
+};
+
+Result compileSource(const std::string& text, const std::string& fileName, const Options& options = {});
+Result compileFile(const std::string& path, const Options& options = {});
+// A spec built in code (validation/, tests, the planner's edits): it goes through the
+// checker's validation first (spec/validate.h), so an invalid hand-built spec is a located
+// diagnostic, never an emitter exception.
+Result compileSpec(const FilterSpec& spec, const Options& options = {});
+
+// The output file names a spec will produce, without compiling (for -M).
+std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec& spec);
+
+// Writes the artifact's files of the given kinds (all when empty) plus `extra` files into
+// `dir`, all-or-nothing (emit/output_writer.h). Returns "" on success, else one line.
+std::string writeArtifact(const std::filesystem::path& dir, const Artifact& artifact,
+                          const std::set<OutputKind>& kinds = {}, const std::vector<EmittedFile>& extra = {});
+
+}  // namespace shadowc::driver

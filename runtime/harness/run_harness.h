@@ -1,0 +1,50 @@
+// The run harness: the one way a compiled filter is run (`validate`, `demo`, `sweep`, the
+// stability suite, the GPU tests, the benchmarks). Compiled passes + inputs in, outputs +
+// per-pass timings out. It knows the manifest only (DESIGN.md: the runtime knows nothing about
+// techniques): the caller gets `CompiledPasses` (manifest/compiled_passes.h) from the driver's
+// artifact (driver::Artifact::passes()) or from a directory written by `shadowc compile`.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "manifest/compiled_passes.h"
+#include "manifest/frame_uniforms.h"
+#include "manifest/manifest.h"
+#include "runtime/executor/host_image.h"
+#include "runtime/executor/pass_executor.h"  // TimingResult
+
+namespace shadowc::rt {
+
+class VulkanContext;
+
+// The harness's inputs, by image role (manifest.h ImageRole). Missing roles the manifest does
+// not use are fine; a role the manifest uses but the inputs lack is an error.
+struct RunInputs {
+  ShadowcFrame frame{};
+  uint32_t mapSize = 0, width = 0, height = 0;  // shadow-map side, screen size
+  HostImage lightDepth;                          // InputDepth, R32F map x map
+  HostImage position, normal;                    // InputPosition / InputNormal, RGBA32F w x h
+};
+
+struct RunOptions {
+  int warmup = 0;  // untimed runs first (lavapipe JIT-compiles on the first dispatch)
+  int runs = 0;    // timed runs; 0 = one untimed run, no timing
+  std::vector<std::string> downloads;  // intermediate images to read back (level 0, layer 0)
+};
+
+struct RunOutputs {
+  std::vector<float> visibility;          // OutputVisibility, channel 0, width x height
+  std::optional<TimingResult> timing;     // when runs > 0
+  std::map<std::string, HostImage> images;  // the requested downloads
+  double pipelineCreateMs = 0;            // executor construction (pipelines, images, descriptors)
+};
+
+RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const RunInputs& inputs,
+                     const RunOptions& options = {});
+
+}  // namespace shadowc::rt

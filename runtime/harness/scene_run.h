@@ -1,0 +1,57 @@
+// A compiled filter on a scene, measured against the ground truth: rasterize the scene's light
+// depth and G-buffer, run the passes through the run harness (run_harness.h), trace the Embree
+// reference (cached by content hash), compute the metrics. What `validate`, `demo`, `sweep`,
+// `plan` and the GPU accuracy tests share.
+#pragma once
+
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "runtime/harness/run_harness.h"
+#include "runtime/metrics/metrics.h"
+#include "runtime/raster/rasterizer.h"
+#include "runtime/scene/frame_setup.h"
+#include "runtime/scene/scene.h"
+
+namespace shadowc::rt {
+
+struct SceneSettings {
+  std::string scene = "two_planes";  // a built-in name or a .json path (loadScene)
+  uint32_t screen = 256;              // square screen side
+  uint32_t map = 1024;                // shadow-map side
+  int referenceSamples = 16;          // light samples per axis for the Embree reference
+  std::filesystem::path referenceCache;  // empty = the default cache ($SHADOWC_CACHE_DIR or ~/.cache/shadowc)
+  bool useCache = true;
+};
+
+// The scene side, computed once and reusable for many filters (a sweep runs every variant on it).
+struct PreparedScene {
+  SceneSettings settings;
+  Scene scene;
+  FrameSetup setup;
+  RasterOutputs raster;
+  std::vector<float> reference;  // Embree visibility, width x height
+  std::vector<uint8_t> mask;     // geometry pixels
+  bool referenceFromCache = false;
+  std::string referenceCacheWarning;
+};
+
+// Progress of the reference trace (fraction done, seconds so far), for a progress line.
+using ReferenceProgressFn = std::function<void(double fraction, double seconds, double raysPerSecond)>;
+
+std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, const SceneSettings& settings,
+                                                  const ReferenceProgressFn& progress = {});
+
+struct SceneRunResult {
+  RunOutputs outputs;  // visibility, timing (when runs > 0)
+  Metrics metrics;     // outputs.visibility against the reference over the geometry mask
+};
+
+SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, const PreparedScene& scene,
+                          const RunOptions& options = {});
+
+}  // namespace shadowc::rt
