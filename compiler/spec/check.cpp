@@ -28,6 +28,22 @@ std::string join(const Names& names) {
   return out;
 }
 
+const char* warpName(Warp w) {
+  switch (w) {
+    case Warp::Linear:
+      return "linear";
+    case Warp::Exp:
+      return "exp";
+    case Warp::Evsm2:
+      return "evsm2";
+    case Warp::Evsm4:
+      return "evsm4";
+    case Warp::PowerCdf:
+      return "power_cdf";
+  }
+  return "linear";
+}
+
 std::string describeValue(const Value& v) {
   switch (v.kind) {
     case Value::Kind::Number:
@@ -181,6 +197,18 @@ class Checker {
     return v->width;
   }
 
+  // One range for every quadtree height (kernel and blocker walks, Next/Child tables, unrolled
+  // traversal): height 0 would be a single box query (that is 'kernel penumbra'), and height 6
+  // has 5461 nodes, past what a constant table or an unrolled walk should fold in.
+  std::optional<int> quadtreeHeight(const Value* v, const std::string& what) {
+    if (v->kind == Value::Kind::Number && v->number == std::floor(v->number) &&
+        (v->number < kMinQuadtreeHeight || v->number > kMaxQuadtreeHeight)) {
+      at(*v, DiagId::quadtreeHeightRange, what, kMinQuadtreeHeight, kMaxQuadtreeHeight, v->text);
+      return std::nullopt;
+    }
+    return integer(v, what, kMinQuadtreeHeight, kMaxQuadtreeHeight);
+  }
+
   // Binds call arguments to parameters (positional in declaration order, or by name).
   bool bind(const Value& call, const std::vector<Param>& params, Bound& out) {
     if (params.empty()) {
@@ -322,7 +350,7 @@ class Checker {
       // 0 layers would store nothing; 16 layers of rg32f is already 128 bytes per texel.
       if (auto n =
               integer(x, arg("layers", v), 1, 16, "at least 1 (a moments map has one layer or more) and at most 16"))
-        m.layers = *n;
+        m.layers = *n, layers_ = x;
     }
     if (const Value* x = get(b, "overlap")) {
       if (auto n = number(x, arg("overlap", v), Range{0, 0.25})) m.overlap = *n;
@@ -449,7 +477,7 @@ class Checker {
         bl.subdivision = Subdivision::Quadtree;
         if (bind(*sub, {{"height", true}}, sb))
           if (const Value* x = get(sb, "height"))
-            if (auto n = integer(x, arg("height", *sub), 0, 6)) bl.quadtreeHeight = *n, blockerHeight_ = x;
+            if (auto n = quadtreeHeight(x, arg("height", *sub))) bl.quadtreeHeight = *n;
       }
     }
   }
@@ -485,7 +513,7 @@ class Checker {
     if (const Value* x = get(b, "n"))
       if (auto n = integer(x, arg("n", v), 1, 32)) k.uniformN = *n;
     if (const Value* x = get(b, "height"))
-      if (auto n = integer(x, arg("height", v), 0, 6)) k.quadtreeHeight = *n, kernelHeight_ = x;
+      if (auto n = quadtreeHeight(x, arg("height", v))) k.quadtreeHeight = *n;
     if (const Value* x = get(b, "traversal"))
       if (auto c = choice(x, arg("traversal", v), {"table", "unrolled"}))
         k.traversal = *c == 0 ? QuadtreeTraversal::Table : QuadtreeTraversal::Unrolled;
@@ -692,6 +720,17 @@ class Checker {
     if (moments && !sat && spec_.storage.format == StorageFormat::Unorm16 && m.warp == Warp::Evsm4)
       atSetting(storage_, DiagId::negativeMomentsUnrepresentable, "unorm16");
 
+    // VSSM (vssm-yang2010): eq. 4 and the Chebyshev sub-kernel tests read (z, z^2) of one map.
+    if (moments && bl.kind == BlockerKind::Moments) {
+      if (m.warp != Warp::Linear) atSetting(representation_, DiagId::vssmNeedsLinearWarp, warpName(m.warp));
+      if (m.layers > 1) {
+        if (layers_)
+          at(*layers_, DiagId::vssmNeedsOneLayer, m.layers);
+        else
+          atSetting(representation_, DiagId::vssmNeedsOneLayer, m.layers);
+      }
+    }
+
     // Exponential warps: exp(c) must stay representable (FACTS.md "Precision", precision.h).
     if (moments && (m.warp == Warp::Exp || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4)) {
       const ExponentLimit limit = warpExponentLimit(spec_.storage, spec_.mapSize);
@@ -752,11 +791,6 @@ class Checker {
     }
 
     // Dubious but legal.
-    if (k.subdivision == Subdivision::Quadtree && k.quadtreeHeight == 0 && kernelHeight_)
-      at(*kernelHeight_, DiagId::quadtreeHeightZero);
-    if (bl.kind == BlockerKind::Moments && bl.subdivision == Subdivision::Quadtree && bl.quadtreeHeight == 0 &&
-        blockerHeight_)
-      at(*blockerHeight_, DiagId::quadtreeHeightZero);
     const bool chebyshev = m.warp == Warp::Linear || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4;
     if (moments && m.bleedingReduction >= 0.5) atSetting(bleeding_, DiagId::strongBleeding, m.bleedingReduction);
     if (moments && !chebyshev && m.bleedingReduction > 0)
@@ -776,7 +810,7 @@ class Checker {
                 *blocker_ = nullptr, *kernel_ = nullptr, *sampling_ = nullptr, *fallback_ = nullptr,
                 *contact_ = nullptr, *bleeding_ = nullptr;
   const Value *exponent_ = nullptr, *negativeExponent_ = nullptr, *minVariance_ = nullptr, *split_ = nullptr,
-              *kernelHeight_ = nullptr, *blockerHeight_ = nullptr;
+              *layers_ = nullptr;
   bool lightSizeGiven_ = false, explicitOk_ = false;
   int errorsBefore_ = 0;
   std::vector<double> explicitSplits_;
