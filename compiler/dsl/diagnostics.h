@@ -39,6 +39,10 @@ class DiagnosticSink {
   void report(DiagId id, int line, int column, int length, const Args&... args) {
     emit(id, line, column, length, fmt::format(fmt::runtime(diagInfo(id).format), args...));
   }
+  // The same with the arguments already packed (table-driven callers: spec/combination_rules.cpp).
+  void vreport(DiagId id, int line, int column, int length, fmt::format_args args) {
+    emit(id, line, column, length, fmt::vformat(diagInfo(id).format, args));
+  }
   // Attaches "did you mean '...'?" to the last reported diagnostic (when it was kept).
   void suggest(const std::string& suggestion);
 

@@ -2,11 +2,10 @@
 // Implemented by dsl/ (lexer, parser), spec/ (checker, normalization) and dsl/diagnostics.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 #include "spec/filter_spec.h"
 
@@ -16,9 +15,9 @@ enum class Severity { Error, Warning, Note };
 
 struct Diagnostic {
   Severity severity = Severity::Error;
-  std::string code;        // stable code from the diagnostics table, e.g. "E0102"
-  SourceLocation location; // file, 1-based line and column (0:0 = the whole file)
-  int length = 1;          // bytes the caret line underlines (^~~~)
+  std::string code;         // stable code from the diagnostics table, e.g. "E0102"
+  SourceLocation location;  // file, 1-based line and column (0:0 = the whole file)
+  int length = 1;           // bytes the caret line underlines (^~~~)
   std::string message;
   std::string suggestion;  // "did you mean 'quadtree'?" or empty
 };
@@ -30,7 +29,7 @@ struct LoadOptions {
 struct LoadResult {
   std::optional<FilterSpec> spec;  // set only when there is no error
   std::vector<Diagnostic> diagnostics;
-  std::string source;              // the text that was read (for carets)
+  std::string source;  // the text that was read (for carets)
   int errorCount() const;
   int warningCount() const;
 };
