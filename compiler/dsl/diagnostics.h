@@ -9,7 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "spec/load_filter.h"
+#include "dsl/diagnostic.h"
+#include "support/suggest.h"  // closestMatch for DiagnosticSink::suggest's callers
 
 namespace shadowc::dsl {
 
@@ -59,10 +60,5 @@ class DiagnosticSink {
   bool stopped_ = false;
   bool lastKept_ = false;
 };
-
-// Levenshtein distance (two rows, O(|a|*|b|)).
-int editDistance(std::string_view a, std::string_view b);
-// The closest candidate when it is close enough to be a plausible typo, else "".
-std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates);
 
 }  // namespace shadowc::dsl

@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "dsl/source_location.h"
+
 namespace shadowc {
 
 // ---- light -------------------------------------------------------------------------------
@@ -131,11 +133,6 @@ struct ContactSpec {
   bool enabled = false;  // vssm sec. 6.4: |z_avg - d| < epsilon -> n x n PCF
   int n = 3;
   double epsilon = 0.01;
-};
-
-struct SourceLocation {
-  std::string file;
-  int line = 0, column = 0;
 };
 
 struct FilterSpec {

@@ -7,20 +7,10 @@
 #include <string>
 #include <vector>
 
+#include "dsl/diagnostic.h"
 #include "spec/filter_spec.h"
 
 namespace shadowc {
-
-enum class Severity { Error, Warning, Note };
-
-struct Diagnostic {
-  Severity severity = Severity::Error;
-  std::string code;         // stable code from the diagnostics table, e.g. "E0102"
-  SourceLocation location;  // file, 1-based line and column (0:0 = the whole file)
-  int length = 1;           // bytes the caret line underlines (^~~~)
-  std::string message;
-  std::string suggestion;  // "did you mean 'quadtree'?" or empty
-};
 
 struct LoadOptions {
   bool warningsAsErrors = false;  // -Werror
@@ -37,8 +27,7 @@ struct LoadResult {
 LoadResult loadFilterSource(const std::string& text, const std::string& fileName, const LoadOptions& = {});
 LoadResult loadFilterFile(const std::string& path, const LoadOptions& = {});  // missing file -> one error
 
-// glslc form: "file:line:col: error: message [code]", the source line, a caret line, a
-// suggestion line when present; then "N errors generated." (and warnings) when any.
+// formatDiagnostics(result.diagnostics, result.source) (dsl/diagnostic.h).
 std::string formatDiagnostics(const LoadResult& result);
 
 // The normalized spec as JSON (fixed key order; every field explicit). Used by --print-spec

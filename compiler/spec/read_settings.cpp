@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <optional>
 
 namespace shadowc::spec {
 namespace {
@@ -64,7 +65,7 @@ class SettingsReader {
       auto known = std::find(kSettings.begin(), kSettings.end(), s.keyword);
       if (known == kSettings.end()) {
         sink_.report(DiagId::unknownSetting, s.line, s.column, static_cast<int>(s.keyword.size()), s.keyword);
-        sink_.suggest(dsl::closestMatch(s.keyword, kSettings));
+        sink_.suggest(support::closestMatch(s.keyword, kSettings));
         continue;
       }
       // `depth` and `moments` are the two spellings of one axis: the representation.
@@ -107,7 +108,7 @@ class SettingsReader {
     auto it = std::find(options.begin(), options.end(), v.text);
     if (it == options.end()) {
       at(v, DiagId::unknownValue, v.text, what, join(options));
-      sink_.suggest(dsl::closestMatch(v.text, options));
+      sink_.suggest(support::closestMatch(v.text, options));
       return std::nullopt;
     }
     return static_cast<size_t>(it - options.begin());
@@ -201,7 +202,7 @@ class SettingsReader {
         if (it == names.end()) {
           sink_.report(DiagId::unknownArgument, a.line, a.column, static_cast<int>(a.name.size()), a.name, call.text,
                        join(names));
-          sink_.suggest(dsl::closestMatch(a.name, names));
+          sink_.suggest(support::closestMatch(a.name, names));
           ok = false;
           continue;
         }
