@@ -74,7 +74,7 @@ void settle(CaseResult& r) {
 CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, const DepthMap& map,
                     const std::vector<Receiver>& receivers, const LightFrame& light) {
   r.filter = spec.name;
-  const CompiledFilter& cf = compileCached(spec);
+  const CompiledFilter& cf = compileCached(spec, r.naive);
   const CraftedResult run = runCrafted(ctx.vk, cf, map, receivers, light);
   countValues(r, run.visibility);
   const IntentReference reference(spec, map, light);
