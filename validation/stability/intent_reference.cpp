@@ -265,11 +265,15 @@ class Evaluator {
     return unit((l * a.vsm + a.lit + l1 * a.pcf) / total);
   }
 
+  // Exact over every texel that can change the result: the kernel, one texel for bilinear taps
+  // and the blur's radius (a blurred moment holds texels that far away).
   double earlyOut(const std::array<int, 4>& rect, double d) const {  // -1 = undecided
     const int last = int(map_.size) - 1;
+    const bool blurred = s_.representation == Representation::Moments && s_.prefilter.blur != BlurKind::None;
+    const int g = 1 + (blurred ? std::max(0, s_.prefilter.blurRadius) : 0);
     double lo = INFINITY, hi = -INFINITY;
-    for (int y = std::max(rect[1] - 1, 0); y <= std::min(rect[3] + 1, last); ++y)
-      for (int x = std::max(rect[0] - 1, 0); x <= std::min(rect[2] + 1, last); ++x) {
+    for (int y = std::max(rect[1] - g, 0); y <= std::min(rect[3] + g, last); ++y)
+      for (int x = std::max(rect[0] - g, 0); x <= std::min(rect[2] + g, last); ++x) {
         lo = std::min(lo, double(map_.at(x, y)));
         hi = std::max(hi, double(map_.at(x, y)));
       }

@@ -110,7 +110,7 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
 }
 #line 16 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/minmax.glsl"
-#line 13
+#line 17
 vec2 shadowc_minMaxOfRect(ivec4 rect){
   int w = max(rect . z - rect . x, rect . w - rect . y)+ 1;
   int level = w > 1 ? findMSB(w - 1)+ 1 : 0;
@@ -118,13 +118,16 @@ vec2 shadowc_minMaxOfRect(ivec4 rect){
   ivec2 last = max(textureSize(shadowc_minMaxPyramid, level)- 1, ivec2(0));
   ivec2 lo = clamp(rect . xy >> level, ivec2(0), last);
   ivec2 hi = clamp(rect . zw >> level, ivec2(0), last);
-  vec2 a = texelFetch(shadowc_minMaxPyramid, lo, level). rg;
-  vec2 b = texelFetch(shadowc_minMaxPyramid, ivec2(hi . x, lo . y), level). rg;
-  vec2 c = texelFetch(shadowc_minMaxPyramid, ivec2(lo . x, hi . y), level). rg;
-  vec2 e = texelFetch(shadowc_minMaxPyramid, hi, level). rg;
-  return vec2(min(min(a . x, b . x), min(c . x, e . x)), max(max(a . y, b . y), max(c . y, e . y)));
+  vec2 mm = texelFetch(shadowc_minMaxPyramid, lo, level). rg;
+#line 27
+  for(int y = lo . y;y <= hi . y;++ y)
+    for(int x = lo . x;x <= hi . x;++ x){
+      vec2 c = texelFetch(shadowc_minMaxPyramid, ivec2(x, y), level). rg;
+      mm = vec2(min(mm . x, c . x), max(mm . y, c . y));
+    }
+  return mm;
 }
-#line 28
+#line 36
 float shadowc_earlyOut(ivec4 rect, float d){
   vec2 mm = shadowc_minMaxOfRect(rect);
   if(mm . x >= d)return 1.0;
@@ -384,24 +387,25 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 67
+#line 69
 ivec4 shadowc_influenceRect(ShadowcReceiver r){
 
   ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
-#line 73
+#line 75
   ivec2 last = shadowc_mapSize()- 1;
-  return ivec4(max(rect . xy - 1, ivec2(0)), min(rect . zw + 1, last));
+  const int grow = 1 + 0;
+  return ivec4(max(rect . xy - grow, ivec2(0)), min(rect . zw + grow, last));
 }
-#line 78
+#line 81
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 83
+#line 86
   float early = shadowc_earlyOut(shadowc_influenceRect(r), r . d);
   if(early >= 0.0)return early;
-#line 87
+#line 90
   float v = shadowc_vssm(r);
-#line 99
+#line 102
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"
