@@ -40,7 +40,11 @@ float shadowc_aPcfDepth; // area-weighted sum of the occluding PCF samples' dept
 void shadowc_vssmBegin(ivec4 root, float d) {
   shadowc_vRoot = root;
   shadowc_vD = d;
+#if SHADOWC_HAS_SAT
+  shadowc_vMinVariance = max(SHADOWC_MIN_VARIANCE, shadowc_satVarianceFloor);  // sat.glsl: int32 noise
+#else
   shadowc_vMinVariance = SHADOWC_MIN_VARIANCE;
+#endif
   shadowc_aEx = 0.0;
   shadowc_aEx2 = 0.0;
   shadowc_aVsmArea = 0.0;
