@@ -128,6 +128,7 @@ const std::vector<StabilityCase>& stabilityCases() {
     addGeometryCases(out);
     addNaiveCases(out);
     addEarlyOutCases(out);
+    addContactCases(out);
     return out;
   }();
   return cases;

@@ -419,13 +419,22 @@ float shadowc_vssmVisibility(ivec4 rect, float d){
 }
 
 float shadowc_vssm(ShadowcReceiver r){
-  float zb = shadowc_vssmBlocker(shadowc_kernelRect(r . texel, shadowc_searchTexels(r)), r . d);
+  ivec4 searchRect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
+  float zb = shadowc_vssmBlocker(searchRect, r . d);
+#line 211
+  float zAvg = shadowc_rectMoments(searchRect, 0). x;
+  bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
+  if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
+
+    float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
+#line 219
+    return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
+  }
+
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 212
-  if(abs(r . d - zb)< 0.01)return shadowc_pcfBilinearGrid(r . texel, w, r . d, 3);
-
+#line 228
   return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
 }
 #line 45 "lookup/shadowc_lookup.glsl"

@@ -371,11 +371,13 @@ float shadowc_vssmVisibility(ivec4 rect, float d){
 }
 
 float shadowc_vssm(ShadowcReceiver r){
-  float zb = shadowc_vssmBlocker(shadowc_kernelRect(r . texel, shadowc_searchTexels(r)), r . d);
+  ivec4 searchRect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
+  float zb = shadowc_vssmBlocker(searchRect, r . d);
+#line 222
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 214
+#line 228
   return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
 }
 #line 45 "lookup/shadowc_lookup.glsl"
