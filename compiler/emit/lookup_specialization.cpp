@@ -140,11 +140,7 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
     defFloat("SHADOWC_OVERLAP", std::max(0.0, s.moments.overlap));
     defInt("SHADOWC_LAYER_BLEND", layers > 1 && s.moments.overlap > 0.0 ? 1 : 0);
     if (layers > 1 && !splitsTexture) {
-      std::vector<double> splits = s.moments.splits;
-      if (splits.size() != static_cast<size_t>(layers + 1)) {
-        splits.clear();  // unchecked spec: fall back to uniform placement
-        for (int i = 0; i <= layers; ++i) splits.push_back(static_cast<double>(i) / layers);
-      }
+      const std::vector<double>& splits = s.moments.splits;  // layers+1 after normalization
       out.generatedCode += "// Layer split depths s_0..s_N (lauritzen2008 sec. 3.4)\n";
       out.generatedCode += fmt::format("const float shadowc_splitTable[{}] = float[](", layers + 1);
       for (size_t i = 0; i < splits.size(); ++i) out.generatedCode += (i ? ", " : "") + glslFloat(splits[i]);
