@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <set>
 #include <sstream>
 #include <string>
@@ -14,7 +15,7 @@
 #include "emit/depfile.h"
 #include "emit/filter_emitter.h"
 #include "emit/output_writer.h"
-#include "plan/planner.h"
+#include "plan/plan_printer.h"
 #include "spec/load_filter.h"
 
 namespace shadowc::cli {
@@ -25,6 +26,7 @@ struct CompileArgs {
   std::string outputDir;
   std::string emit = "glsl,spirv,manifest";
   bool printSpec = false;
+  bool printPlan = false;
   bool printRecipe = false;
   bool optimize = true;
   bool depsToStdout = false;  // -M
@@ -46,9 +48,8 @@ int error(const std::string& message) {
 }
 
 // Output file names without compiling (for -M): the plan decides every name.
-std::vector<std::string> plannedOutputs(const FilterSpec& spec) {
+std::vector<std::string> plannedOutputs(const FilterSpec& spec, const PassGraph& g) {
   std::set<std::string> names{kManifestFile, lookupFileName(spec.name)};
-  const PassGraph g = planPasses(spec);
   for (const auto& s : g.sources) {
     names.insert(s.stem + ".glsl");
     names.insert(s.stem + ".spv");
@@ -100,13 +101,24 @@ int run(CompileArgs& a, CLI::App& sub) {
 
   if (a.printSpec) {
     fmt::print("{}\n", specToJson(spec).dump(2));
+    if (a.outputDir.empty() && !a.printPlan) return 0;
+  }
+  std::string planLog;
+  const std::optional<PassGraph> plan = planFilter(spec, planLog);
+  if (!plan) {
+    std::fflush(stdout);
+    fmt::print(stderr, "{}", planLog);
+    return 1;
+  }
+  if (a.printPlan) {
+    fmt::print("{}", printPassGraph(*plan));
     if (a.outputDir.empty()) return 0;
   }
   if (a.outputDir.empty()) return error("no output directory (use -o DIR)");
   const std::filesystem::path dir(a.outputDir);
 
   std::vector<std::string> outputs;
-  for (const auto& f : plannedOutputs(spec))
+  for (const auto& f : plannedOutputs(spec, *plan))
     if (keep(f, kinds)) outputs.push_back((dir / f).string());
   if (a.depsToStdout) {  // glslc -M: dependencies only, nothing compiled or written
     fmt::print("{}", makeDependencyRule(outputs, a.input));
@@ -140,6 +152,8 @@ CommandRunner registerCompile(CLI::App& app) {
   sub->add_option("-o,--output", args->outputDir, "output directory (created; files replaced atomically)");
   sub->add_option("--emit", args->emit, "comma-separated subset of glsl,spirv,manifest (default: all)");
   sub->add_flag("--print-spec", args->printSpec, "print the normalized FilterSpec as JSON and stop (unless -o)");
+  sub->add_flag("--print-plan", args->printPlan,
+                "print the pass graph (images, passes, every specialization value) and stop (unless -o)");
   sub->add_flag("--print-recipe", args->printRecipe, "print the -O spirv-opt recipe, one pass per line");
   sub->footer(
       "glslc-style flags:\n"
