@@ -1,6 +1,6 @@
 // compile_bench: what in-process compilation buys. For each sample filter, the median of N
 //   (a) in-process compiles of the emitted GLSL (glslang + -O recipe + spirv-val, linked in),
-//   (b) full in-process `emitFilter` (plan, specialize, preprocess, compile, lookup, manifest),
+//   (b) full in-process `driver::compileSpec` (plan, specialize, preprocess, compile, lookup, manifest),
 //   (c) the same work as (a) done by running the glslangValidator, spirv-opt and spirv-val
 //       programs on the emitted GLSL files (std::system: allowed here, in the benchmark only).
 // Prints a markdown table and the ratio (c)/(a). Usage: compile_bench [N] [sample-substring].
@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "compiler/backend/spirv_backend.h"
+#include "compiler/driver/driver.h"
 #include "compiler/emit/filter_emitter.h"
 #include "compiler/emit/output_writer.h"
 #include "compiler/spec/load_filter.h"
@@ -51,7 +52,8 @@ int main(int argc, char** argv) {
   const std::string recipe = recipeFlags();
 
   fmt::print(
-      "| filter | shaders | in-process compile (ms) | full emitFilter (ms) | glslangValidator + spirv-opt + spirv-val "
+      "| filter | shaders | in-process compile (ms) | full driver compile (ms) | glslangValidator + spirv-opt + "
+      "spirv-val "
       "(ms) | external / in-process |\n");
   fmt::print("|---|---:|---:|---:|---:|---:|\n");
   std::vector<double> ratios;
@@ -62,11 +64,12 @@ int main(int argc, char** argv) {
       fmt::print(stderr, "skipping {}: does not load\n", file.filename().string());
       continue;
     }
-    const shadowc::FilterEmitResult r = shadowc::emitFilter(*loaded.spec);
-    if (!r.ok) {
-      fmt::print(stderr, "skipping {}: {}\n", file.filename().string(), r.log);
+    const shadowc::driver::Result compiled = shadowc::driver::compileSpec(*loaded.spec);
+    if (!compiled.ok) {
+      fmt::print(stderr, "skipping {}: {}\n", file.filename().string(), compiled.log);
       continue;
     }
+    const shadowc::driver::Artifact& r = *compiled.artifact;
     const fs::path dir = tmp / loaded.spec->name;
     std::vector<std::pair<std::string, std::string>> shaders;  // stem, glsl
     for (const auto& f : r.files)
@@ -82,7 +85,7 @@ int main(int argc, char** argv) {
         if (!res.ok) return 1;
       }
       auto t1 = Clock::now();
-      const auto again = shadowc::emitFilter(*loaded.spec);
+      const auto again = shadowc::driver::compileSpec(*loaded.spec);
       auto t2 = Clock::now();
       if (!again.ok) return 1;
       for (const auto& [stem, glsl] : shaders) {
@@ -109,7 +112,7 @@ int main(int argc, char** argv) {
   fs::remove_all(tmp);
   if (ratios.empty()) return 1;
   fmt::print(
-      "\n{} filters, {} runs each (medians). Totals: in-process compile {:.0f} ms, full emitFilter {:.0f} ms, "
+      "\n{} filters, {} runs each (medians). Totals: in-process compile {:.0f} ms, full driver compile {:.0f} ms, "
       "external programs {:.0f} ms; external/in-process: median {:.2f}×, total {:.2f}×\n",
       ratios.size(), n, sumIn, sumFull, sumExt, median(ratios), sumExt / sumIn);
   return 0;

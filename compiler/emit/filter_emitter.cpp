@@ -10,7 +10,6 @@
 #include "emit/specialization_block.h"
 #include "emit/template_includes.h"
 #include "plan/internal_error.h"
-#include "plan/planner.h"
 #include "spec/load_filter.h"
 
 namespace shadowc {
@@ -114,23 +113,6 @@ FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, c
   result.manifest = std::move(m);
   result.ok = true;
   return result;
-}
-
-std::optional<PassGraph> planFilter(const FilterSpec& spec, std::string& log) {
-  try {
-    return planPasses(spec);
-  } catch (const std::invalid_argument& e) {
-    log += spec.location.file + ":" + std::to_string(spec.location.line) + ":" + std::to_string(spec.location.column) +
-           ": error: " + e.what() + "\n";
-    return std::nullopt;
-  }
-}
-
-FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options) {
-  FilterEmitResult result;
-  const std::optional<PassGraph> graph = planFilter(spec, result.log);
-  if (!graph) return result;
-  return emitPassGraph(spec, *graph, options);
 }
 
 }  // namespace shadowc

@@ -5,7 +5,6 @@
 // unless every shader compiled and validated.
 #pragma once
 
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -28,14 +27,9 @@ struct FilterEmitResult {
   std::vector<EmittedFile> files;  // sorted by name: <stem>.glsl/.spv, <filter>_lookup.glsl, manifest.json
 };
 
-// `graph` is planPasses(spec). A malformed graph is an InternalError (plan/internal_error.h).
+// `graph` is planPasses(spec); compiler/driver/ is the one caller that wires the two. A
+// malformed graph is an InternalError (plan/internal_error.h).
 FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, const EmitOptions& options = {});
-
-// plan + emitPassGraph, until compiler/driver/ is the one caller that wires the two (issue 8).
-FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options = {});
-// planPasses, with a spec the planner rejects as one located error line in `log` (until the
-// checker owns every such rule: issue 8).
-std::optional<PassGraph> planFilter(const FilterSpec& spec, std::string& log);
 
 // The manifest's file name and the lookup file's name for a filter.
 inline constexpr const char* kManifestFile = "manifest.json";

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "driver/driver.h"
 #include "emit/filter_emitter.h"
 #include "emit/output_writer.h"
 #include "spec/load_filter.h"
@@ -31,6 +32,22 @@ inline FilterSpec loadSample(const std::string& name) {
   const LoadResult r = loadFilterFile(samplePath(name).string());
   if (!r.spec) throw std::runtime_error("sample " + name + " does not load:\n" + formatDiagnostics(r));
   return *r.spec;
+}
+
+// A spec through the compiler driver (the one place that wires plan and emit), as the
+// emitter's result: ok, log, manifest and the sorted files.
+inline FilterEmitResult compile(const FilterSpec& spec, bool optimize = true) {
+  driver::Options o;
+  o.optimize = optimize;
+  driver::Result r = driver::compileSpec(spec, o);
+  FilterEmitResult out;
+  out.ok = r.ok && r.artifact.has_value();
+  out.log = r.log;
+  if (r.artifact) {
+    out.manifest = std::move(r.artifact->manifest);
+    out.files = std::move(r.artifact->files);
+  }
+  return out;
 }
 
 // name -> bytes of every file in a directory.

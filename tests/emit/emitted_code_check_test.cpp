@@ -36,7 +36,7 @@ FilterSpec vssmTraversal(QuadtreeTraversal t) {
 }
 
 TEST(EmittedCode, DepthPcfShadeHasNoMomentsOrSatCode) {
-  const FilterEmitResult r = emitFilter(test::pcfSpec());
+  const FilterEmitResult r = test::compile(test::pcfSpec());
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
   ASSERT_FALSE(shade.empty());
@@ -47,13 +47,13 @@ TEST(EmittedCode, DepthPcfShadeHasNoMomentsOrSatCode) {
 }
 
 TEST(EmittedCode, VssmShadeReadsTheIntegerSat) {
-  const FilterEmitResult r = emitFilter(test::vssmInt32Spec());
+  const FilterEmitResult r = test::compile(test::vssmInt32Spec());
   ASSERT_TRUE(r.ok) << r.log;
   EXPECT_NE(file(r, "shade.glsl").find("usampler2DArray"), std::string::npos);
 }
 
 TEST(EmittedCode, UnrolledQuadtreeTraversalHasNoLoop) {
-  const FilterEmitResult r = emitFilter(vssmTraversal(QuadtreeTraversal::Unrolled));
+  const FilterEmitResult r = test::compile(vssmTraversal(QuadtreeTraversal::Unrolled));
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
   const std::string body = functionBody(shade, "shadowc_qtUnrolledKernel");
@@ -65,7 +65,7 @@ TEST(EmittedCode, UnrolledQuadtreeTraversalHasNoLoop) {
 
 // Sibling: the table-driven traversal does carry the Next/Child tables (Algorithm 2).
 TEST(EmittedCode, TableQuadtreeTraversalCarriesNextChildTables) {
-  const FilterEmitResult r = emitFilter(vssmTraversal(QuadtreeTraversal::Table));
+  const FilterEmitResult r = test::compile(vssmTraversal(QuadtreeTraversal::Table));
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
   EXPECT_NE(shade.find("shadowc_qtNext"), std::string::npos);
@@ -75,7 +75,7 @@ TEST(EmittedCode, TableQuadtreeTraversalCarriesNextChildTables) {
 
 TEST(EmittedCode, EmittedGlslIsPreprocessed) {
   for (const FilterSpec& spec : {test::vssmInt32Spec(), test::layeredEvsmSpec(), test::blurMipSpec()}) {
-    const FilterEmitResult r = emitFilter(spec);
+    const FilterEmitResult r = test::compile(spec);
     ASSERT_TRUE(r.ok) << r.log;
     for (const auto& f : r.files) {
       if (!f.name.ends_with(".glsl")) continue;
@@ -87,7 +87,7 @@ TEST(EmittedCode, EmittedGlslIsPreprocessed) {
 
 TEST(EmittedCode, LookupFileIsIncludableAndDescribedInTheManifest) {
   const FilterSpec spec = test::vssmInt32Spec();
-  const FilterEmitResult r = emitFilter(spec);
+  const FilterEmitResult r = test::compile(spec);
   ASSERT_TRUE(r.ok) << r.log;
   const std::string lookup = file(r, lookupFileName(spec.name));
   EXPECT_EQ(lookup.find("\n#version"), std::string::npos);  // directives start lines
@@ -99,9 +99,7 @@ TEST(EmittedCode, LookupFileIsIncludableAndDescribedInTheManifest) {
 
 TEST(EmittedCode, OptimizationLevelChangesSpirvAndTheHashButNotTheGlsl) {
   const FilterSpec spec = test::vssmInt32Spec();
-  EmitOptions o0;
-  o0.optimize = false;
-  const FilterEmitResult a = emitFilter(spec), b = emitFilter(spec, o0);
+  const FilterEmitResult a = test::compile(spec), b = test::compile(spec, false);
   ASSERT_TRUE(a.ok && b.ok) << a.log << b.log;
   EXPECT_EQ(file(a, "shade.glsl"), file(b, "shade.glsl"));
   EXPECT_NE(file(a, "shade.spv"), file(b, "shade.spv"));

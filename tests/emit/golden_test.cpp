@@ -12,7 +12,7 @@ namespace shadowc {
 namespace {
 
 void checkGoldens(const FilterSpec& spec) {
-  const FilterEmitResult r = emitFilter(spec);
+  const FilterEmitResult r = test::compile(spec);
   ASSERT_TRUE(r.ok) << r.log;
   int compared = 0;
   for (const EmittedFile& f : r.files) {

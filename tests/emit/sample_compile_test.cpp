@@ -13,9 +13,7 @@ class SampleCompile : public ::testing::TestWithParam<std::string> {};
 
 void compileAndCheck(const std::string& sample, bool optimize) {
   const FilterSpec spec = test::loadSample(sample);
-  EmitOptions o;
-  o.optimize = optimize;
-  const FilterEmitResult r = emitFilter(spec, o);
+  const FilterEmitResult r = test::compile(spec, optimize);
   ASSERT_TRUE(r.ok) << sample << ":\n" << r.log;
   const auto dir = test::freshTempDir("sample-" + sample);
   ASSERT_EQ(writeFilesAtomically(dir, r.files), "");
@@ -44,7 +42,7 @@ TEST_P(SampleCompile, UnoptimizedCompilesAndEveryWrittenSpvValidates) { compileA
 TEST_P(SampleCompile, RecompilingGivesByteIdenticalFiles) {
   const FilterSpec spec = test::loadSample(GetParam());
   const auto a = test::freshTempDir("det-a"), b = test::freshTempDir("det-b");
-  const FilterEmitResult ra = emitFilter(spec), rb = emitFilter(spec);
+  const FilterEmitResult ra = test::compile(spec), rb = test::compile(spec);
   ASSERT_TRUE(ra.ok && rb.ok) << ra.log << rb.log;
   ASSERT_EQ(writeFilesAtomically(a, ra.files), "");
   ASSERT_EQ(writeFilesAtomically(b, rb.files), "");
