@@ -1,6 +1,7 @@
 // compile_bench: what in-process compilation buys. For each sample filter, the median of N
 //   (a) in-process compiles of the emitted GLSL (glslang + -O recipe + spirv-val, linked in),
-//   (b) full in-process `driver::compileSpec` (plan, specialize, preprocess, compile, lookup, manifest),
+//   (b) a full in-process compile by the driver (load, check, plan, specialize, preprocess,
+//       compile, lookup, manifest: driver::compileFile),
 //   (c) the same work as (a) done by running the glslangValidator, spirv-opt and spirv-val
 //       programs on the emitted GLSL files (std::system: allowed here, in the benchmark only).
 // Prints a markdown table and the ratio (c)/(a). Usage: compile_bench [N] [sample-substring].
@@ -16,9 +17,6 @@
 
 #include "compiler/backend/spirv_backend.h"
 #include "compiler/driver/driver.h"
-#include "compiler/emit/filter_emitter.h"
-#include "compiler/emit/output_writer.h"
-#include "compiler/spec/load_filter.h"
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -59,23 +57,19 @@ int main(int argc, char** argv) {
   std::vector<double> ratios;
   double sumIn = 0, sumExt = 0, sumFull = 0;
   for (const fs::path& file : samples) {
-    const shadowc::LoadResult loaded = shadowc::loadFilterFile(file.string());
-    if (!loaded.spec) {
-      fmt::print(stderr, "skipping {}: does not load\n", file.filename().string());
+    const shadowc::driver::Result r = shadowc::driver::compileFile(file.string());
+    if (!r.artifact) {
+      fmt::print(stderr, "skipping {}: does not compile\n{}", file.filename().string(), r.log);
       continue;
     }
-    const shadowc::driver::Result compiled = shadowc::driver::compileSpec(*loaded.spec);
-    if (!compiled.ok) {
-      fmt::print(stderr, "skipping {}: {}\n", file.filename().string(), compiled.log);
-      continue;
-    }
-    const shadowc::driver::Artifact& r = *compiled.artifact;
-    const fs::path dir = tmp / loaded.spec->name;
+    const std::string name = r.artifact->spec.name;
+    const fs::path dir = tmp / name;
     std::vector<std::pair<std::string, std::string>> shaders;  // stem, glsl
-    for (const auto& f : r.files)
-      if (f.name.ends_with(".glsl") && f.name != shadowc::lookupFileName(loaded.spec->name))
+    for (const auto& f : r.artifact->files)
+      if (f.name.ends_with(".glsl") && f.name != r.artifact->manifest.shade.glsl)
         shaders.emplace_back(f.name.substr(0, f.name.size() - 5), f.bytes);
-    if (!shadowc::writeFilesAtomically(dir, r.files).empty()) return 1;
+    // The external programs of (c) read the GLSL from disk.
+    if (!shadowc::driver::writeArtifact(dir, *r.artifact).empty()) return 1;
 
     std::vector<double> in, full, ext;
     for (int i = 0; i < n; ++i) {
@@ -85,7 +79,7 @@ int main(int argc, char** argv) {
         if (!res.ok) return 1;
       }
       auto t1 = Clock::now();
-      const auto again = shadowc::driver::compileSpec(*loaded.spec);
+      const auto again = shadowc::driver::compileFile(file.string());
       auto t2 = Clock::now();
       if (!again.ok) return 1;
       for (const auto& [stem, glsl] : shaders) {
@@ -107,7 +101,7 @@ int main(int argc, char** argv) {
     const double a = median(in), b = median(full), c = median(ext);
     sumIn += a, sumFull += b, sumExt += c;
     ratios.push_back(c / a);
-    fmt::print("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f}× |\n", loaded.spec->name, shaders.size(), a, b, c, c / a);
+    fmt::print("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f}× |\n", name, shaders.size(), a, b, c, c / a);
   }
   fs::remove_all(tmp);
   if (ratios.empty()) return 1;

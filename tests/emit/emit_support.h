@@ -1,4 +1,4 @@
-// Shared by the emit tests: the sample filter files, and emitting a file or spec into a dir.
+// Shared by the emit tests: the sample filter files, compiled through the driver (driver/driver.h).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -9,9 +9,6 @@
 #include <vector>
 
 #include "driver/driver.h"
-#include "emit/filter_emitter.h"
-#include "emit/output_writer.h"
-#include "spec/load_filter.h"
 #include "support/test_support.h"
 
 namespace shadowc::test {
@@ -28,26 +25,26 @@ inline std::filesystem::path samplePath(const std::string& name) {
   return sourceDir() / "samples" / "filters" / (name + ".shadow");
 }
 
-inline FilterSpec loadSample(const std::string& name) {
-  const LoadResult r = loadFilterFile(samplePath(name).string());
-  if (!r.spec) throw std::runtime_error("sample " + name + " does not load:\n" + formatDiagnostics(r));
-  return *r.spec;
-}
-
-// A spec through the compiler driver (the one place that wires plan and emit), as the
-// emitter's result: ok, log, manifest and the sorted files.
-inline FilterEmitResult compile(const FilterSpec& spec, bool optimize = true) {
+inline driver::Options optimizeOption(bool optimize) {
   driver::Options o;
   o.optimize = optimize;
-  driver::Result r = driver::compileSpec(spec, o);
-  FilterEmitResult out;
-  out.ok = r.ok && r.artifact.has_value();
-  out.log = r.log;
-  if (r.artifact) {
-    out.manifest = std::move(r.artifact->manifest);
-    out.files = std::move(r.artifact->files);
+  return o;
+}
+
+// A sample filter file through the whole pipeline.
+inline driver::Result compileSample(const std::string& name, bool optimize = true) {
+  return driver::compileFile(samplePath(name).string(), optimizeOption(optimize));
+}
+
+// A file of the artifact; fails the test when the compile failed or the file is absent.
+inline std::string artifactFile(const driver::Result& r, const std::string& name) {
+  if (!r.artifact) {
+    ADD_FAILURE() << "no artifact:\n" << r.log;
+    return {};
   }
-  return out;
+  if (const std::string* bytes = r.artifact->file(name)) return *bytes;
+  ADD_FAILURE() << "no emitted file " << name;
+  return {};
 }
 
 // name -> bytes of every file in a directory.
