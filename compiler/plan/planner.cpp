@@ -75,7 +75,7 @@ class Planner {
 
     // moments: depth -> warped (per-layer remapped) moments.
     Specialization d = momentsValues();
-    d.add("SHADOWC_SPLITS", fp32(layerSplits(spec_)));
+    d.add("SHADOWC_SPLITS", fp32(spec_.moments.splits));  // layers+1 after normalization
     d.add("SHADOWC_OVERLAP", fp32(spec_.moments.overlap));
     d.add("SHADOWC_SPLITS_FROM_IMAGE", lloyd);
     Pass& m = addPass("moments", "moments", {8, 8, 1}, {kMap, DispatchMode::Texels},
@@ -203,14 +203,6 @@ std::vector<double> blurWeights(BlurKind kind, int r) {
   for (int k = 1; k <= r; ++k) total += 2.0 * w[k];
   for (double& x : w) x /= total;
   return w;
-}
-
-std::vector<double> layerSplits(const FilterSpec& spec) {
-  const int layers = std::max(1, spec.moments.layers);
-  if (static_cast<int>(spec.moments.splits.size()) == layers + 1) return spec.moments.splits;
-  std::vector<double> s(static_cast<size_t>(layers) + 1);
-  for (int i = 0; i <= layers; ++i) s[i] = static_cast<double>(i) / layers;
-  return s;
 }
 
 PassGraph planPasses(const FilterSpec& spec) { return Planner(spec).run(); }

@@ -108,7 +108,7 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
     defBool("SHADOWC_LAYER_BLEND", layers > 1 && s.moments.overlap > 0.0);
     if (layers > 1 && !splitsTexture)
       out.tables.push_back(
-          RealTable{"shadowc_splitTable", "Layer split depths s_0..s_N (lauritzen2008 sec. 3.4)", layerSplits(s)});
+          RealTable{"shadowc_splitTable", "Layer split depths s_0..s_N (lauritzen2008 sec. 3.4)", s.moments.splits});
   }
 
   // ---- extras -----------------------------------------------------------------------------

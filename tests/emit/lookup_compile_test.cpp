@@ -129,7 +129,7 @@ std::vector<Variant> variants() {
     s.moments.overlap = 0.0;
     v.push_back({"layered_lloyd", s});
     s.moments.split = SplitPlacement::Uniform;
-    s.moments.splits.clear();
+    s.moments.splits = {0.0, 0.25, 0.5, 0.75, 1.0};  // uniform, as normalization writes it
     s.moments.overlap = 0.01;
     s.moments.warp = Warp::PowerCdf;
     v.push_back({"power_cdf_layered", s});

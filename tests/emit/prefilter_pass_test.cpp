@@ -27,7 +27,8 @@ std::vector<FilterSpec> variants() {
   for (SatKind k : {SatKind::Fp32Centered, SatKind::Fp32Naive}) {
     FilterSpec s = test::vssmInt32Spec();
     s.storage.sat = k;
-    s.moments.layers = 2;  // layered SAT: a filtered-moments lookup (VSSM needs one layer)
+    s.moments.layers = 2;                // layered SAT: a filtered-moments lookup (VSSM needs one layer)
+    s.moments.splits = {0.0, 0.5, 1.0};  // uniform, as normalization writes it
     s.blocker.kind = BlockerKind::None;
     s.kernel.subdivision = Subdivision::None;
     v.push_back(s);

@@ -36,6 +36,7 @@ inline FilterSpec layeredEvsmSpec() {
   s.moments.overlap = 0.02;
   s.moments.positiveExponent = 5.0;
   s.storage.format = StorageFormat::Fp16;
+  s.kernel.size = KernelSize::Fixed;  // a penumbra kernel needs a blocker estimate (E0409)
   return s;
 }
 
@@ -48,6 +49,7 @@ inline FilterSpec blurMipSpec() {
   s.prefilter.blurRadius = 2;
   s.prefilter.mips = true;
   s.kernel.maxTexels = 32;
+  s.kernel.size = KernelSize::Fixed;  // a penumbra kernel needs a blocker estimate (E0409)
   return s;
 }
 

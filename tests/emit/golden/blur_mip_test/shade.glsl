@@ -193,9 +193,9 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
 }
 #line 73
 float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 80
-  float w = shadowc_searchTexels(r);
-#line 85
+#line 83
+  float w = 3.0;
+
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
 #line 42 "lookup/shadowc_lookup.glsl"
