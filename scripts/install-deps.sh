@@ -10,6 +10,8 @@ PKGS=(
   libglm-dev libfmt-dev nlohmann-json3-dev libcli11-dev libstb-dev          # math, format, JSON, CLI, PNG
   libembree-dev libtbb-dev libassimp-dev zlib1g-dev              # reference, meshes (assimp links libz.so)
   libgtest-dev libgmock-dev libbenchmark-dev                                # tests and benchmarks
+  ninja-build                                     # tests/integration drives a consumer with Ninja and make
+  clang-14 libclang-rt-14-dev                     # libFuzzer + ASan/UBSan runtimes (scripts/fuzz.sh)
 )
 missing=()
 for p in "${PKGS[@]}"; do
