@@ -28,6 +28,7 @@ struct CompileArgs {
   bool optimize = true;
   bool depsToStdout = false;  // -M
   bool depsFile = false;      // -MD
+  std::string depsTarget;     // -MT: the rule's target instead of the outputs
   bool werror = false;
 };
 
@@ -39,8 +40,13 @@ int error(const std::string& message) {
 
 int run(CompileArgs& a, CLI::App& sub) {
   // CLI11 2.1 has no multi-letter single-dash options: glslc's -O0, -MD and -Werror arrive here.
-  for (const std::string& extra : sub.remaining()) {
-    if (extra == "-O")
+  const std::vector<std::string> extras = sub.remaining();
+  for (size_t i = 0; i < extras.size(); ++i) {
+    const std::string& extra = extras[i];
+    if (extra == "-MT") {  // glslc's -MT TARGET; Ninja wants a depfile naming only declared outputs
+      if (i + 1 == extras.size()) return error("-MT needs a target (shadowc compile FILE -o DIR -MD -MT TARGET)");
+      a.depsTarget = extras[++i];
+    } else if (extra == "-O")
       a.optimize = true;
     else if (extra == "-O0")
       a.optimize = false;
@@ -112,6 +118,7 @@ int run(CompileArgs& a, CLI::App& sub) {
   std::vector<std::string> outputs;
   for (const auto& f : driver::plannedOutputs(*r.plan, spec))
     if (kinds.count(driver::outputKindOf(f))) outputs.push_back((dir / f).string());
+  if (!a.depsTarget.empty()) outputs = {a.depsTarget};
   if (a.depsToStdout) {  // glslc -M: dependencies only, nothing compiled or written
     fmt::print("{}", makeDependencyRule(outputs, a.input));
     return 0;
@@ -141,6 +148,7 @@ CommandRunner registerCompile(CLI::App& app) {
       "  -O0         no spirv-opt (glslang output, validated)\n"
       "  -M          print make dependencies of the outputs to stdout; compile nothing\n"
       "  -MD         also write DIR/<filter>.d with those dependencies\n"
+      "  -MT TARGET  name TARGET (not the outputs) as the rule's target, with -M or -MD\n"
       "  -Werror     treat warnings (filter description and GLSL) as errors\n"
       "Outputs: DIR/manifest.json, DIR/<pass>.glsl, DIR/<pass>.spv, DIR/<filter>_lookup.glsl (docs/manifest.md).");
   sub->allow_extras();
