@@ -71,9 +71,8 @@ TEST_P(AccuracyTest, AgainstEmbreeReference) {
       << c.sample << " folds its light size: compare a copy with size: scene";
   for (const SceneBound& b : c.scenes) {
     SCOPED_TRACE(b.scene);
-    const SceneCase& sc = sceneCase(context(), b.scene, kMap, kScreen, kSamples);
-    const std::vector<float> result = runOnScene(context(), *cf, sc);
-    const rt::Metrics m = rt::computeMetrics(result, sc.reference, sc.mask);
+    const rt::PreparedScene& sc = sceneCase(context(), b.scene, kMap, kScreen, kSamples);
+    const rt::Metrics m = rt::runOnScene(context(), cf->passes, sc).metrics;
     ASSERT_GT(m.compared, kScreen * kScreen / 8) << "too few geometry pixels";
     EXPECT_EQ(m.nonFinite, 0u);
     EXPECT_EQ(m.outOfRange, 0u);
@@ -98,11 +97,12 @@ TEST_F(VulkanTest, AccuracyBoundsRejectAWrongResult) {
   ASSERT_NE(pcss, nullptr);
   const CompiledFilter* cf = compileFilterCached(pcss->sample, caseSource(*pcss), pcss->optimize);
   ASSERT_NE(cf, nullptr);
-  const SceneCase& sc = sceneCase(context(), "two_planes", kMap, kScreen, kSamples);
-  std::vector<float> result = runOnScene(context(), *cf, sc);
+  const rt::PreparedScene& sc = sceneCase(context(), "two_planes", kMap, kScreen, kSamples);
+  const rt::SceneRunResult run = rt::runOnScene(context(), cf->passes, sc);
   const double bound = pcss->scenes[0].rmse;
   ASSERT_STREQ(pcss->scenes[0].scene, "two_planes");
-  EXPECT_LE(rt::computeMetrics(result, sc.reference, sc.mask).rmse, bound);
+  EXPECT_LE(run.metrics.rmse, bound);
+  const std::vector<float>& result = run.outputs.visibility;
   std::vector<float> hard = result, dark = result;
   for (float& v : hard) v = v < 0.5f ? 0.0f : 1.0f;
   for (float& v : dark) v = v < 1.0f ? 0.5f * v : v;
