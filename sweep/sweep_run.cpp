@@ -113,6 +113,12 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
   for (const Case& c : e.cases)
     for (const Variant& v : e.variants) {
       if (!o.shard.contains(c.index * e.variants.size() + v.index) || !checked[v.index].spec) continue;
+      if (int(c.map) > checked[v.index].spec->mapSize) {  // as validate: its precision checks assume at most that
+        res.skipped.push_back({v.index, v.label, "SW004",
+                               fmt::format("{}: map {} exceeds the filter's map_size {}", c.label, c.map,
+                                           checked[v.index].spec->mapSize)});
+        continue;
+      }
       const std::string key = cacheKey({checked[v.index].specJson, shaderKindName(v.shader), scenes[c.index].hash,
                                         c.screen, c.map, spec.referenceSamples, spec.runs, spec.warmup, o.device});
       if (std::optional<Row> cached = readCachedRow(o.outDir, key)) {
