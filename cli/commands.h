@@ -2,8 +2,9 @@
 // subcommand with its options and returns the function that runs it (exit code).
 #pragma once
 
-#include <CLI/CLI.hpp>
 #include <functional>
+
+#include <CLI/CLI.hpp>
 
 namespace shadowc::cli {
 
