@@ -10,6 +10,9 @@ PKGS=(
   libglm-dev libfmt-dev nlohmann-json3-dev libcli11-dev libstb-dev          # math, format, JSON, CLI, PNG
   libembree-dev libtbb-dev libassimp-dev zlib1g-dev              # reference, meshes (assimp links libz.so)
   libgtest-dev libgmock-dev libbenchmark-dev                                # tests and benchmarks
+  gnuplot-nox                                     # shadowc sweep: time-vs-RMSE plots (SVG, PNG)
+  chromium                                        # sweep report test: headless load and screenshot
+  slurm-wlm munge parallel                        # sweeps on a cluster: job array test, GNU parallel
 )
 missing=()
 for p in "${PKGS[@]}"; do
