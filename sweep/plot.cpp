@@ -58,8 +58,8 @@ PlotFiles writePlots(const std::filesystem::path& dir, const Results& res) {
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   for (const auto& [c, members] : byCase) {
     const std::string stem = fmt::format("case{}", c);
-    std::string all = "# total_ms rmse variant\n", fr = all;
-    double lo = 1e300, hi = 0, top = 0;
+    std::string all = "# total_ms rmse variant\n", fr = "# total_ms rmse rank variant\n";
+    double lo = 1e300, hi = 0, top = 0, low = 1e300;
     for (size_t i : members) {
       const Row& r = res.rows[i];
       if (!eligible(r)) continue;
@@ -67,35 +67,43 @@ PlotFiles writePlots(const std::filesystem::path& dir, const Results& res) {
       lo = std::min(lo, r.totalMs);
       hi = std::max(hi, r.totalMs);
       top = std::max(top, r.metrics.rmse);
+      if (r.metrics.rmse > 0) low = std::min(low, r.metrics.rmse);
     }
-    const bool logX = hi > 8 * lo;
-    // Room on the right for the frontier labels, and below/above the points.
-    const std::string ranges = logX ? fmt::format("set logscale x\nset xrange [{:.6g}:{:.6g}]\n", lo / 1.6, hi * 3)
-                                    : fmt::format("set xrange [0:{:.6g}]\n", hi * 1.3);
+    // Log axes when the values span more than a decade or so; room on the right and above
+    // for the labels.
+    const bool logX = hi > 8 * lo, logY = low < 1e300 && top > 10 * low;
+    const std::string ranges = (logX ? fmt::format("set logscale x\nset xrange [{:.6g}:{:.6g}]\n", lo / 1.6, hi * 2.5)
+                                     : fmt::format("set xrange [0:{:.6g}]\n", hi * 1.2)) +
+                               (logY ? fmt::format("set logscale y\nset yrange [{:.6g}:{:.6g}]\n", low / 1.6, top * 2)
+                                     : fmt::format("set yrange [0:{:.6g}]\n", top > 0 ? top * 1.2 : 1.0));
+    // Frontier points are labelled with their rank in the frontier table: names overlap when
+    // points are close, numbers rarely do.
     if (const auto it = front.find(c); it != front.end())
-      for (size_t i : it->second)
-        fr += fmt::format("{:.6g} {:.6g} {}\n", res.rows[i].totalMs, res.rows[i].metrics.rmse,
-                          quoted(res.rows[i].variant));
+      for (size_t k = 0; k < it->second.size(); ++k) {
+        const Row& r = res.rows[it->second[k]];
+        fr += fmt::format("{:.6g} {:.6g} \"{}\" {}\n", r.totalMs, r.metrics.rmse, k + 1, quoted(r.variant));
+      }
     rt::writeFileAtomically(plots / (stem + ".dat"), all);
     rt::writeFileAtomically(plots / (stem + "_frontier.dat"), fr);
     const std::filesystem::path svgTmp = plots / (stem + ".svg.tmp"), pngTmp = plots / (stem + ".png.tmp");
     const std::string plot = fmt::format(
         "plot {0} using 1:2 with points pt 7 ps 0.9 lc rgb '#8c96a3' title 'variants', \\\n"
-        "     {1} using 1:2 with linespoints pt 7 ps 1.3 lw 2 lc rgb '#c8102e' title 'Pareto frontier', \\\n"
-        "     {1} using 1:2:3 with labels left offset 0.8,0.5 font ',9' tc rgb '#5a0a16' noenhanced notitle\n",
+        "     {1} using 1:2 with linespoints pt 7 ps 1.3 lw 2 lc rgb '#c8102e' title 'Pareto frontier (numbered as "
+        "in the table)', \\\n"
+        "     {1} using 1:2:3 with labels left offset 0.6,0.7 font ',11' tc rgb '#5a0a16' noenhanced notitle\n",
         gpPath(plots / (stem + ".dat")), gpPath(plots / (stem + "_frontier.dat")));
+    const std::string label = res.rows[members.front()].caseLabel;
     std::string gp = fmt::format(
         "# {} — time vs RMSE, frontier in red (written by shadowc sweep)\n"
         "set title {} noenhanced\n"
         "set xlabel 'frame time, median of the timed runs (ms{})'\n"
-        "set ylabel 'RMSE against the Embree reference'\n"
-        "set grid lc rgb '#dddddd'\nset key top right box opaque\nset border lc rgb '#444444'\n"
-        "{}set yrange [0:{:.6g}]\n"
+        "set ylabel 'RMSE against the Embree reference{}'\n"
+        "set grid lc rgb '#dddddd'\nset key top right box opaque\nset border lc rgb '#444444'\n{}"
         "set terminal svg size 760,480 dynamic noenhanced font 'sans,11' background rgb 'white'\nset output {}\n{}"
         "set terminal pngcairo size 760,480 noenhanced font 'sans,10' background rgb 'white'\nset output {}\n{}"
         "unset output\n",
-        res.rows[members.front()].caseLabel, quoted(res.rows[members.front()].caseLabel), logX ? ", log scale" : "",
-        ranges, top > 0 ? top * 1.15 : 1.0, gpPath(svgTmp), plot, gpPath(pngTmp), plot);
+        label, quoted(label), logX ? ", log scale" : "", logY ? " (log scale)" : "", ranges, gpPath(svgTmp), plot,
+        gpPath(pngTmp), plot);
     rt::writeFileAtomically(plots / (stem + ".gp"), gp);
     if (lo > hi) continue;  // nothing finite to draw
     if (const std::string err = runGnuplot(plots / (stem + ".gp"), plots / "gnuplot.log"); !err.empty()) {

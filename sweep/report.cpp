@@ -37,7 +37,7 @@ constexpr const char* kStyle = R"(
 body{font:15px/1.45 system-ui,-apple-system,"Segoe UI",sans-serif;color:#1d2329;margin:0;background:#f4f5f7}
 main{max-width:1120px;margin:0 auto;padding:24px 28px 48px}
 h1{font-size:26px;margin:0 0 4px}h2{font-size:20px;margin:36px 0 10px;border-bottom:2px solid #c8102e;padding-bottom:4px}
-h3{font-size:15px;margin:0 0 8px}.sub{color:#5b6570;margin:0 0 18px}
+h3{font-size:15px;margin:14px 0 8px}.card h3{margin-top:0}.sub{color:#5b6570;margin:0 0 18px}
 .stats{display:flex;gap:12px;flex-wrap:wrap;margin:14px 0}
 .stat{background:#fff;border:1px solid #dde1e6;border-radius:6px;padding:8px 14px}.stat b{font-size:20px;display:block}
 table{border-collapse:collapse;background:#fff;width:100%;margin:8px 0 14px;font-size:14px}
