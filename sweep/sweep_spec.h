@@ -61,7 +61,6 @@ struct SweepSpec {
   int referenceSamples = 16;
   int runs = 5, warmup = 2;
   std::vector<ShaderKind> shaders{ShaderKind::Specialized};
-  std::vector<std::string> warnings;  // e.g. a parameter no filter uses
 };
 
 // `label` names the text in messages; relative file paths resolve against `baseDir`.
