@@ -125,7 +125,11 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         cached->variantIndex = v.index;  // the same measurement may sit at another place in a new sweep
         cached->caseIndex = c.index;
         cached->variant = v.label;
+        cached->base = v.base;
+        cached->params = v.params;
+        cached->filterText = v.text;
         cached->caseLabel = c.label;
+        cached->scene = c.scene.label;
         rows.push_back(std::move(*cached));
         ++res.stats.cached;
       } else {
@@ -170,6 +174,7 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
   }
   for (const auto& [v, c] : compiled)
     if (c.skipped) res.skipped.push_back(*c.skipped);
+  std::erase_if(pending, [&](const Job& j) { return !compiled.at(j.variant).passes; });
 
   // 5. Run, one case at a time: the scene (raster + reference) is prepared once per case.
   if (!pending.empty()) {
@@ -181,7 +186,6 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
       const Variant& v = e.variants[job.variant];
       const Case& c = e.cases[job.caseIndex];
       const Compiled& comp = compiled.at(job.variant);
-      if (!comp.passes) continue;
       const std::string refImage = fmt::format("images/case{}-reference.png", c.index);
       if (preparedCase != c.index) {
         progress.note(fmt::format("preparing {} (raster, Embree reference {}x{} samples)", c.label,
