@@ -221,3 +221,24 @@ TEST(SweepCli, ShardsMergedEqualOneProcess) {
 
 }  // namespace
 }  // namespace shadowc
+
+namespace shadowc {
+namespace {
+
+// Bad input: one located message, a non-zero exit, nothing run. The sibling is every test above.
+TEST(SweepCli, BadDescriptionIsOneLocatedError) {
+  const auto dir = writeSweep("sweep-bad", R"({"filters": ["no_such.shadow"], "scenes": ["two_planes"]})");
+  const test::CliResult r = runSweep(dir, "out");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("sweep.json: error: filters[0]: cannot read"), std::string::npos) << r.err;
+  size_t errors = 0;
+  for (size_t at = 0; (at = r.err.find("error:", at)) != std::string::npos; ++at) ++errors;
+  EXPECT_EQ(errors, 1u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/results.json"));
+  const test::CliResult shard = runSweep(writeSweep("sweep-bad-shard", tinySweep()), "out", "--shard 2/2");
+  EXPECT_EQ(shard.code, 1);
+  EXPECT_NE(shard.err.find("--shard '2/2': need 0 <= I < N"), std::string::npos) << shard.err;
+}
+
+}  // namespace
+}  // namespace shadowc
