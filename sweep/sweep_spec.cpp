@@ -11,7 +11,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "runtime/scene/suggest.h"
+#include "support/suggest.h"
 
 namespace shadowc::sweep {
 namespace {
@@ -31,7 +31,7 @@ class Reader {
     if (!j.is_object()) fail(path, "expected an object");
     for (const auto& [key, value] : j.items()) {
       if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      const std::string near = rt::closestMatch(key, allowed);
+      const std::string near = support::closestMatch(key, allowed);
       fail(join(path, key), near.empty() ? fmt::format("unknown field (expected one of: {})", fmt::join(allowed, ", "))
                                          : fmt::format("unknown field (did you mean '{}'?)", near));
     }
