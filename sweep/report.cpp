@@ -124,8 +124,9 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
                            label, esc(r.variant), label);
       h += fmt::format(
           "</div>\n<details><summary>filter description</summary><pre>{}</pre></details>\n"
+          "<details><summary>normalized (every default explicit)</summary><pre>{}</pre></details>\n"
           "<div class=\"sub\"><code>{}</code></div></div>\n",
-          esc(r.filterText), esc(r.contentHash));
+          esc(r.filterText), esc(r.normalizedText), esc(r.contentHash));
     }
     h += "</div>\n";
     h += fmt::format(

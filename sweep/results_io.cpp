@@ -76,6 +76,7 @@ ordered_json rowToJson(const Row& r) {
   j["device"] = r.device;
   j["images"] = {{"result", r.resultImage}, {"error", r.errorImage}, {"reference", r.referenceImage}};
   j["filter_text"] = r.filterText;
+  j["normalized_text"] = r.normalizedText;
   j["spec"] = r.spec;
   return j;
 }
@@ -109,6 +110,7 @@ Row rowFromJson(const json& j) {
     r.errorImage = j.at("images").at("error").get<std::string>();
     r.referenceImage = j.at("images").at("reference").get<std::string>();
     r.filterText = j.at("filter_text").get<std::string>();
+    r.normalizedText = j.at("normalized_text").get<std::string>();
     r.spec = j.at("spec");
     return r;
   } catch (const json::exception& e) {

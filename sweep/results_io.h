@@ -12,7 +12,7 @@
 
 namespace shadowc::sweep {
 
-inline constexpr int kResultsVersion = 1;
+inline constexpr int kResultsVersion = 2;  // 2: rows carry normalized_text
 
 nlohmann::ordered_json rowToJson(const Row& row);
 Row rowFromJson(const nlohmann::json& j);  // throws std::runtime_error naming the missing field

@@ -30,6 +30,7 @@ struct Row {
   int referenceSamples = 0, runs = 0, warmup = 0;
   nlohmann::ordered_json spec;  // the checker's normalized FilterSpec (specToJson)
   std::string filterText;       // the variant's filter description
+  std::string normalizedText;   // the same filter with every default explicit (printFilter)
   std::string contentHash;      // manifest content hash of the compiled variant
   std::vector<PassTime> passes;
   double totalMs = 0;

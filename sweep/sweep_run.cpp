@@ -17,6 +17,7 @@
 #include "runtime/images/png_image.h"
 #include "runtime/vulkan/vulkan_context.h"
 #include "spec/load_filter.h"
+#include "spec/print_filter.h"
 #include "sweep/cache_key.h"
 #include "sweep/progress.h"
 #include "sweep/results_io.h"
@@ -128,6 +129,7 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         cached->base = v.base;
         cached->params = v.params;
         cached->filterText = v.text;
+        cached->normalizedText = printFilter(*checked[v.index].spec);
         cached->caseLabel = c.label;
         cached->scene = c.scene.label;
         rows.push_back(std::move(*cached));
@@ -243,6 +245,7 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
       row.warmup = spec.warmup;
       row.spec = checked[v.index].specJson;
       row.filterText = v.text;
+      row.normalizedText = printFilter(*checked[v.index].spec);
       row.contentHash = comp.contentHash;
       row.device = ctx.deviceName();
       row.referenceImage = refImage;

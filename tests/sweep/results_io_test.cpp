@@ -27,6 +27,7 @@ Row sample(const std::string& key, size_t variant, double ms, double rmse) {
   r.warmup = 1;
   r.spec = {{"name", "pcss"}, {"note", "a \"quoted\", comma"}};
   r.filterText = "filter pcss {\n    depth\n}\n";
+  r.normalizedText = "filter pcss {\n    depth\n    bias constant(0.001)\n}\n";
   r.contentHash = "xxh3-128:00";
   r.passes = {{"shade", "shade", ms}};
   r.totalMs = ms;

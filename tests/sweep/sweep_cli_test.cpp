@@ -142,6 +142,8 @@ TEST(SweepCli, NoFrontierRowIsDominatedAndInvalidOnesAreCounted) {
   ASSERT_EQ(r.code, 0) << r.err;
   const sweep::Results res = sweep::readResultsJson(dir / "out/results.json");
   ASSERT_EQ(res.rows.size(), 4u);
+  for (const auto& row : res.rows)  // each row stores its filter normalized (printFilter)
+    EXPECT_EQ(row.normalizedText.rfind("filter ", 0), 0u) << row.normalizedText;
   const auto front = sweep::frontiers(res.rows).at(0);
   for (size_t i : front)
     for (const auto& other : res.rows) EXPECT_FALSE(sweep::dominates(other, res.rows[i])) << res.rows[i].variant;
