@@ -13,6 +13,7 @@ PKGS=(
   gnuplot-nox                                     # shadowc sweep: time-vs-RMSE plots (SVG, PNG)
   chromium                                        # sweep report test: headless load and screenshot
   slurm-wlm munge parallel                        # sweeps on a cluster: job array test, GNU parallel
+  assimp-testmodels                             # real meshes of the duck/spider/engine scenes (/usr/share/assimp/models)
 )
 missing=()
 for p in "${PKGS[@]}"; do
