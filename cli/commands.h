@@ -15,5 +15,6 @@ CommandRunner registerCheck(CLI::App& app);      // cmd_check.cpp
 CommandRunner registerValidate(CLI::App& app);   // cmd_validate.cpp
 CommandRunner registerDemo(CLI::App& app);       // cmd_demo.cpp
 CommandRunner registerStability(CLI::App& app);  // cmd_stability.cpp
+CommandRunner registerSweep(CLI::App& app);      // cmd_sweep.cpp
 
 }  // namespace shadowc::cli

@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   add(registerValidate);
   add(registerDemo);
   add(registerStability);
+  add(registerSweep);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
