@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   add(registerDemo);
   add(registerStability);
   add(registerAnalyze);
+  add(registerPlan);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
