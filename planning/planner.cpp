@@ -227,7 +227,7 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
     std::string line;
     if (f == Feature::SlopeBias) {
       line = !depthFamily
-                 ? fmt::format("{} dropped: moment filters take no depth bias ({})", featureName(f), v.statistic)
+                 ? fmt::format("{} dropped: moment filters take no depth bias; {}", featureName(f), v.statistic)
              : d.slopeBias ? fmt::format("{} kept: {}", featureName(f), v.statistic)
                            : fmt::format("{} dropped: {}", featureName(f), v.statistic);
     } else if (result.chosen.has(f)) {
