@@ -21,7 +21,7 @@ CalibrationRun calibrationRun(rt::VulkanContext& ctx, const Candidate& c, const 
   DescribeOptions d;
   d.slopeBias = useSlopeBias(one.stats, rules.rules);
   d.contactEpsilon = one.stats[0].contactEpsilon;
-  const driver::Result r = driver::compileSource(describeCandidate(c, d), c.name + ".shadow");
+  const driver::Result r = driver::compileSpec(candidateSpec(c, d));
   if (!r.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile:\n" + r.log);
   rt::RunOptions options;
   options.warmup = warmup;

@@ -2,6 +2,8 @@
 
 #include <fmt/core.h>
 
+#include "spec/print_filter.h"
+
 namespace shadowc::planning {
 namespace {
 
@@ -124,41 +126,121 @@ const Candidate* findCandidate(const std::string& name) {
   return nullptr;
 }
 
-std::string describeCandidate(const Candidate& c, const DescribeOptions& o) {
-  std::string out;
-  for (const std::string& line : o.header) out += line.empty() ? "#\n" : "# " + line + "\n";
-  out += fmt::format("filter {} {{\n", o.filterName);
-  for (Feature f : kFeatures) {
-    auto it = o.featureComments.find(f);
-    if (it != o.featureComments.end()) out += "    # " + it->second + "\n";
-  }
-  auto line = [&](const char* key, const std::string& value) { out += fmt::format("    {:<10} {}\n", key, value); };
+FilterSpec candidateSpec(const Candidate& c, const DescribeOptions& o) {
+  FilterSpec s;
+  s.name = o.filterName;
+  s.light.shape = LightShape::Rect;
+  s.light.sizeFromScene = true;  // the runtime supplies the scene's light width
   const bool depthFamily = c.family == "hard" || c.family == "pcf" || c.family == "pcss";
   if (depthFamily) {
-    out += "    depth\n";
+    s.representation = Representation::Depth;
     if (c.blocker) {
-      line("blocker", fmt::format("search({}, pattern: poisson)", c.searchTaps));
-      line("kernel", "penumbra(max: 64)");
-      line("sampling", fmt::format("poisson({}, rotate: stable)", c.pcfTaps));
+      // pcss-blog.txt: Poisson blocker search, penumbra estimate, Poisson PCF of that width.
+      s.blocker.kind = BlockerKind::Search;
+      s.blocker.taps = c.searchTaps;
+      s.blocker.pattern = SamplePattern::Poisson;
+      s.kernel.size = KernelSize::Penumbra;
+      s.kernel.maxTexels = 64;
+      s.sampling.pattern = PcfPattern::Poisson;
+      s.sampling.taps = c.pcfTaps;
+      s.sampling.rotation = Rotation::Stable;
     } else {
-      line("kernel", fmt::format("fixed({})", c.fixedTexels));
+      s.kernel.size = KernelSize::Fixed;
+      s.kernel.fixedTexels = c.fixedTexels;
+      s.sampling.pattern = PcfPattern::Grid;
+      s.sampling.gridN = c.fixedTexels;
     }
-    line("bias", o.slopeBias ? "slope(0.005, constant: 0.001)" : "constant(0.001)");
-  } else if (c.family == "layered_vsm") {
-    // lauritzen2008 sec. 3-4: uniform splits with a small overlap, box-blurred moments.
-    line("moments", fmt::format("linear(layers: {}, split: uniform, overlap: 0.02)", c.layers));
-    line("blur", "box(radius: 2)");
-  } else {
-    line("moments", "linear");
-    line("storage", "sat(int32)");
-    line("blocker", "moments");
-    line("kernel", c.quadtree ? fmt::format("quadtree(height: {}, max: 128)", c.quadtreeHeight)
-                              : fmt::format("uniform({}, max: 128)", c.uniformN));
-    if (c.fallback) line("fallback", "pcf(2x2)");
-    if (c.contact) line("contact", fmt::format("pcf(3x3, epsilon: {:g})", o.contactEpsilon));
-    if (c.earlyOut) line("early_out", "minmax");
+    if (o.slopeBias) {
+      s.bias.kind = BiasKind::SlopeScaled;  // max(slope (1 - N.L), constant), pcss-blog.txt
+      s.bias.slope = 0.005;
+      s.bias.constant = 0.001;
+    } else {
+      s.bias.kind = BiasKind::Constant;
+      s.bias.constant = 0.001;
+    }
+    return s;
   }
-  out += "}\n";
+  s.representation = Representation::Moments;
+  s.moments.warp = Warp::Linear;
+  s.moments.layers = c.layers;
+  s.moments.split = SplitPlacement::Uniform;
+  s.moments.splits.clear();
+  for (int i = 0; i <= c.layers; ++i) s.moments.splits.push_back(double(i) / c.layers);
+  s.kernel.size = KernelSize::Fixed;
+  s.kernel.fixedTexels = 1;
+  if (c.family == "layered_vsm") {
+    // lauritzen2008 sec. 3-4: uniform splits with a small overlap, box-blurred moments.
+    s.moments.overlap = 0.02;
+    s.prefilter.blur = BlurKind::Box;
+    s.prefilter.blurRadius = 2;
+    return s;
+  }
+  // VSSM (vssm-yang2010): int32 SAT (sec. 6.4), eq. 4 blocker estimate with the paper's mixed
+  // scheme (uniform m = 5), uniform or quadtree kernel (sec. 5.2-5.3).
+  s.storage.sat = SatKind::Int32;
+  s.blocker.kind = BlockerKind::Moments;
+  s.blocker.subdivision = Subdivision::Uniform;
+  s.blocker.uniformM = 5;
+  s.kernel.size = KernelSize::Penumbra;
+  s.kernel.maxTexels = 128;
+  s.kernel.subdivision = c.quadtree ? Subdivision::Quadtree : Subdivision::Uniform;
+  s.kernel.quadtreeHeight = c.quadtreeHeight > 0 ? c.quadtreeHeight : s.kernel.quadtreeHeight;
+  s.kernel.uniformN = c.uniformN;
+  s.fallback.pcf = c.fallback;
+  s.fallback.n = 2;
+  s.contact.enabled = c.contact;
+  s.contact.n = 3;
+  s.contact.epsilon = o.contactEpsilon;
+  s.earlyOutMinMax = c.earlyOut;
+  return s;
+}
+
+namespace {
+
+// The setting a feature's comment sits above in printFilter's output.
+const char* settingOf(Feature f) {
+  switch (f) {
+    case Feature::BlockerSearch:
+      return "blocker";
+    case Feature::Sat:
+      return "storage";
+    case Feature::PenumbraKernel:
+      return "kernel";
+    case Feature::Quadtree:
+      return "kernel";
+    case Feature::Fallback:
+      return "fallback";
+    case Feature::Contact:
+      return "contact";
+    case Feature::EarlyOut:
+      return "early_out";
+    case Feature::Layers:
+      return "representation";
+    case Feature::SlopeBias:
+      return "bias";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string describeCandidate(const Candidate& c, const DescribeOptions& o) {
+  const std::string printed = printFilter(candidateSpec(c, o));  // spec/print_filter.h: every argument named
+  std::string out;
+  for (const std::string& line : o.header) out += line.empty() ? "#\n" : "# " + line + "\n";
+  size_t pos = 0;
+  while (pos < printed.size()) {
+    const size_t eol = printed.find('\n', pos);
+    const std::string line = printed.substr(pos, eol == std::string::npos ? std::string::npos : eol - pos);
+    pos = eol == std::string::npos ? printed.size() : eol + 1;
+    std::string key = line.size() > 4 ? line.substr(4, line.find(' ', 4) - 4) : "";
+    if (key == "depth" || key == "moments") key = "representation";
+    for (Feature f : kFeatures) {
+      auto it = o.featureComments.find(f);
+      if (it != o.featureComments.end() && key == settingOf(f)) out += "    # " + it->second + "\n";
+    }
+    out += line + "\n";
+  }
   return out;
 }
 

@@ -1,12 +1,14 @@
 // The candidate builder: the variants the planner chooses among, each one a point in DESIGN.md's
-// space written as an ordinary filter description. The ONE place that writes description text
-// (until compiler/spec/print_filter.h's printFilter(FilterSpec) replaces the text building in
-// describeCandidate()). Calibration measures exactly these texts.
+// space built as a FilterSpec (candidateSpec) and written as an ordinary filter description by
+// the one spec printer (spec/print_filter.h) with the plan's comments. Calibration and
+// confirmation compile exactly these specs (driver::compileSpec).
 #pragma once
 
 #include <map>
 #include <string>
 #include <vector>
+
+#include "spec/filter_spec.h"
 
 namespace shadowc::planning {
 
@@ -45,7 +47,9 @@ struct DescribeOptions {
   std::map<Feature, std::string> featureComments;  // one comment per feature (without '#')
 };
 
-// The filter description text of a candidate (the checker accepts it; comments included).
+FilterSpec candidateSpec(const Candidate& c, const DescribeOptions& options);
+// printFilter(candidateSpec(...)) with the header and one comment above the setting of each
+// feature (the checker accepts it).
 std::string describeCandidate(const Candidate& c, const DescribeOptions& options);
 
 }  // namespace shadowc::planning

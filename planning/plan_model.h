@@ -25,7 +25,7 @@ struct PlanRules {
   double satTexels = 6;              // SAT ruled out when the p99 penumbra is narrower (taps cover it)
   double quadtreeTexels = 12;        // quadtree ruled out when the p99 penumbra is narrower
   double slopeDegrees = 45;          // slope-scaled bias when the p99 receiver slope is steeper
-  double confirmMargin = 1.5;        // candidates predicted above bound * margin are not confirmed
+  double confirmMargin = 3;          // candidates predicted above bound * margin are confirmed last
 };
 
 // The error model's inputs for one scene (fixed order; names in kErrorTerms).

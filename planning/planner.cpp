@@ -74,7 +74,7 @@ Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const P
     if (it != cache->end()) return it->second;
   }
   const std::string text = describeCandidate(c, d);
-  const driver::Result r = driver::compileSource(text, c.name + ".shadow");
+  const driver::Result r = driver::compileSpec(candidateSpec(c, d));
   if (!r.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile:\n" + r.log + text);
   const CompiledPasses passes = r.artifact->passes();
   Measurement m;
