@@ -13,6 +13,7 @@
 #include "emit/poisson_disk.h"
 #include "emit/quadtree_tables.h"
 #include "emit/template_codes.h"
+#include "plan/image_formats.h"
 
 namespace shadowc {
 
@@ -133,6 +134,10 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
     defFloat("SHADOWC_BLEEDING", std::clamp(s.moments.bleedingReduction, 0.0, 0.999));
     defInt("SHADOWC_BLEEDING_ON", s.moments.bleedingReduction > 0.0 ? 1 : 0);
     defInt("SHADOWC_LAYERS", layers);
+    if (s.moments.warp == Warp::Msm) {
+      defInt("SHADOWC_MSM_QUANTIZED", msmQuantized(s) ? 1 : 0);
+      defFloat("SHADOWC_MSM_BIAS", s.moments.momentBias);
+    }
     defFloat("SHADOWC_OVERLAP", std::max(0.0, s.moments.overlap));
     defInt("SHADOWC_LAYER_BLEND", layers > 1 && s.moments.overlap > 0.0 ? 1 : 0);
     if (layers > 1 && !splitsTexture) {

@@ -15,6 +15,7 @@ constexpr int warpDefineValue(Warp w) {  // SHADOWC_WARP
     case Warp::Evsm2: return 2;
     case Warp::Evsm4: return 3;
     case Warp::PowerCdf: return 4;
+    case Warp::Msm: return 5;
   }
   return 0;
 }

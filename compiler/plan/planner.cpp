@@ -50,11 +50,14 @@ class Planner {
   }
 
   Defines momentsDefines() const {
-    return {{"SHADOWC_WARP", std::to_string(warpDefineValue(spec_.moments.warp))},
-            {"SHADOWC_EXP_POSITIVE", glslFloat(spec_.moments.positiveExponent)},
-            {"SHADOWC_EXP_NEGATIVE", glslFloat(spec_.moments.negativeExponent)},
-            {"SHADOWC_LAYERS", std::to_string(spec_.moments.layers)},
-            {"SHADOWC_MOMENTS_FORMAT", glslQualifier(momentsFormat(spec_))}};
+    Defines d = {{"SHADOWC_WARP", std::to_string(warpDefineValue(spec_.moments.warp))},
+                 {"SHADOWC_EXP_POSITIVE", glslFloat(spec_.moments.positiveExponent)},
+                 {"SHADOWC_EXP_NEGATIVE", glslFloat(spec_.moments.negativeExponent)},
+                 {"SHADOWC_LAYERS", std::to_string(spec_.moments.layers)},
+                 {"SHADOWC_MOMENTS_FORMAT", glslQualifier(momentsFormat(spec_))}};
+    // Moment shadow maps: the sec. 4.3 quantization for 16-bit storage (image_formats.h).
+    if (spec_.moments.warp == Warp::Msm) d.emplace_back("SHADOWC_MSM_QUANTIZED", msmQuantized(spec_) ? "1" : "0");
+    return d;
   }
 
   void planMoments() {

@@ -305,16 +305,18 @@ class Checker {
   }
 
   void readMoments(const Value& v, const std::string& what) {
-    auto idx = variant(v, what, {"linear", "exp", "evsm2", "evsm4", "power_cdf"});
+    auto idx = variant(v, what, {"linear", "exp", "evsm2", "evsm4", "power_cdf", "msm"});
     if (!idx) return;
     spec_.representation = Representation::Moments;
-    const Warp warps[] = {Warp::Linear, Warp::Exp, Warp::Evsm2, Warp::Evsm4, Warp::PowerCdf};
+    const Warp warps[] = {Warp::Linear, Warp::Exp, Warp::Evsm2, Warp::Evsm4, Warp::PowerCdf, Warp::Msm};
     MomentsSpec& m = spec_.moments;
     m.warp = warps[*idx];
     std::vector<Param> params;
     if (m.warp == Warp::Exp || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4) params.push_back({"exponent", true});
     if (m.warp == Warp::Evsm4) params.push_back({"negative_exponent", true});
-    if (m.warp != Warp::Exp && m.warp != Warp::PowerCdf) params.push_back({"min_variance", false});
+    if (m.warp == Warp::Msm) params.push_back({"moment_bias", true});
+    if (m.warp != Warp::Exp && m.warp != Warp::PowerCdf && m.warp != Warp::Msm)
+      params.push_back({"min_variance", false});
     for (std::string_view p : {"layers", "split", "overlap"}) params.push_back({p, false});
     Bound b;
     bind(v, params, b);
@@ -336,6 +338,10 @@ class Checker {
     }
     if (const Value* x = get(b, "min_variance")) {
       if (auto n = number(x, arg("min_variance", v), Range{0, 1})) m.minVariance = *n, minVariance_ = x;
+    }
+    if (const Value* x = get(b, "moment_bias")) {
+      // 0 would leave the Hankel matrix of a single depth singular (Algorithm 3 divides by it).
+      if (auto n = number(x, arg("moment_bias", v), Range{0, 0.01, true})) m.momentBias = *n, momentBias_ = x;
     }
     if (const Value* x = get(b, "split")) readSplit(*x, arg("split", v));
   }
@@ -633,6 +639,9 @@ class Checker {
     // fp16 moments need a larger variance floor (vsm-tutorial: variance = max(variance, 0.0005)).
     if (!minVariance_ && moments && spec_.storage.format == StorageFormat::Fp16 && spec_.storage.sat == SatKind::None)
       m.minVariance = 5e-4;
+    // Moment bias: the paper's 3e-5 for 16-bit storage (unorm16 or the 16.16 int32 SAT, both
+    // quantized by sec. 4.3); fp32 needs less, 3e-6 (docs/techniques.md: measured in fp32).
+    if (!momentBias_ && moments && m.warp == Warp::Msm) m.momentBias = msmDefaultBias(spec_.storage);
     // Splits: layers+1 boundaries in [0,1]. Lloyd starts uniform; the planner refines them with
     // the scene's depth histogram (lauritzen2008 sec. 4.1).
     if (m.split == SplitPlacement::Explicit && explicitOk_) {
@@ -691,6 +700,7 @@ class Checker {
     }
     if (moments && !sat && spec_.storage.format == StorageFormat::Unorm16 && m.warp == Warp::Evsm4)
       atSetting(storage_, DiagId::negativeMomentsUnrepresentable, "unorm16");
+    if (moments && m.warp == Warp::Msm) msmCombinations();
 
     // Exponential warps: exp(c) must stay representable (FACTS.md "Precision", precision.h).
     if (moments && (m.warp == Warp::Exp || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4)) {
@@ -759,8 +769,8 @@ class Checker {
       at(*blockerHeight_, DiagId::quadtreeHeightZero);
     const bool chebyshev = m.warp == Warp::Linear || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4;
     if (moments && m.bleedingReduction >= 0.5) atSetting(bleeding_, DiagId::strongBleeding, m.bleedingReduction);
-    if (moments && !chebyshev && m.bleedingReduction > 0)
-      atSetting(bleeding_, DiagId::noEffect, "bleeding", "only Chebyshev warps (linear, evsm2, evsm4) bleed");
+    if (moments && !chebyshev && m.warp != Warp::Msm && m.bleedingReduction > 0)
+      atSetting(bleeding_, DiagId::noEffect, "bleeding", "only Chebyshev warps (linear, evsm2, evsm4) and msm bleed");
     if (moments && chebyshev && minVariance_ && m.minVariance == 0) at(*minVariance_, DiagId::zeroMinVariance);
     if (moments && spec_.storage.format == StorageFormat::Fp16 && !sat) {
       if (lightSizeGiven_ && spec_.light.size > 0.1) atSetting(light_, DiagId::fp16LargeLight, spec_.light.size);
@@ -769,14 +779,29 @@ class Checker {
     }
   }
 
+  // Moment shadow maps (Peters & Klein 2015): what the four moments need from the storage.
+  void msmCombinations() {
+    const MomentsSpec& m = spec_.moments;
+    if (m.layers > 1) atSetting(representation_, DiagId::msmLayers, m.layers);
+    if (spec_.storage.sat == SatKind::None && spec_.storage.format == StorageFormat::Fp16)
+      atSetting(storage_, DiagId::msmFp16);
+    if (spec_.storage.sat == SatKind::Fp32Centered || spec_.storage.sat == SatKind::Fp32Naive) {
+      const MsmSatPrecision p = msmFp32SatPrecision(spec_);
+      if (p.meanError > m.momentBias)
+        atSetting(storage_, DiagId::msmSatPrecision, spec_.mapSize, p.boxTexels, p.meanError, m.momentBias);
+    }
+    if (momentBias_ && m.momentBias < msmDefaultBias(spec_.storage))
+      at(*momentBias_, DiagId::msmSmallBias, m.momentBias, msmDefaultBias(spec_.storage));
+  }
+
   const dsl::FilterDecl& f_;
   dsl::DiagnosticSink& sink_;
   FilterSpec spec_;
   const Setting *light_ = nullptr, *representation_ = nullptr, *storage_ = nullptr, *blur_ = nullptr, *mips_ = nullptr,
                 *blocker_ = nullptr, *kernel_ = nullptr, *sampling_ = nullptr, *fallback_ = nullptr,
                 *contact_ = nullptr, *bleeding_ = nullptr;
-  const Value *exponent_ = nullptr, *negativeExponent_ = nullptr, *minVariance_ = nullptr, *split_ = nullptr,
-              *kernelHeight_ = nullptr, *blockerHeight_ = nullptr;
+  const Value *exponent_ = nullptr, *negativeExponent_ = nullptr, *minVariance_ = nullptr, *momentBias_ = nullptr,
+              *split_ = nullptr, *kernelHeight_ = nullptr, *blockerHeight_ = nullptr;
   bool lightSizeGiven_ = false, explicitOk_ = false;
   int errorsBefore_ = 0;
   std::vector<double> explicitSplits_;
