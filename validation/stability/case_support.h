@@ -44,5 +44,6 @@ void addSatCases(std::vector<StabilityCase>& out);
 void addEstimatorCases(std::vector<StabilityCase>& out);
 void addGeometryCases(std::vector<StabilityCase>& out);
 void addNaiveCases(std::vector<StabilityCase>& out);
+void addMsmCases(std::vector<StabilityCase>& out);
 
 }  // namespace shadowc::validation

@@ -151,6 +151,7 @@ const std::vector<StabilityCase>& stabilityCases() {
     addEstimatorCases(out);
     addGeometryCases(out);
     addNaiveCases(out);
+    addMsmCases(out);
     return out;
   }();
   return cases;
