@@ -32,6 +32,7 @@ TEST(EmitGolden, PcfDepthOnly) { checkGoldens(test::pcfSpec()); }
 TEST(EmitGolden, VssmInt32WithMinMax) { checkGoldens(test::vssmInt32Spec()); }
 TEST(EmitGolden, LayeredEvsm4Fp16) { checkGoldens(test::layeredEvsmSpec()); }
 TEST(EmitGolden, PowerCdfBlurMips) { checkGoldens(test::blurMipSpec()); }
+TEST(EmitGolden, MsmUnorm16Sample) { checkGoldens(test::loadSample("msm_unorm16")); }
 
 // The sibling that proves the comparison can fail.
 TEST(EmitGolden, AChangedByteIsReported) {

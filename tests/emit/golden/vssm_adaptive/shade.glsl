@@ -196,7 +196,7 @@ vec4 shadowc_summedMean(ivec4 rect, int layer){
   return vec4(sum)/(65536.0 * area);
 #line 46
 }
-#line 39 "lookup/shadowc_lookup.glsl"
+#line 41 "lookup/shadowc_lookup.glsl"
 
 #line 1 "lookup/layered.glsl"
 #line 14
@@ -230,7 +230,7 @@ int shadowc_layerOf(float d){
     if(d >= shadowc_split(i))j = i;
   return j;
 }
-#line 41 "lookup/shadowc_lookup.glsl"
+#line 43 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/moments_filter.glsl"
 #line 14
 vec4 shadowc_rectMoments(ivec4 rect, int layer){
@@ -248,28 +248,28 @@ vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
 float shadowc_estimate(vec4 m, float d, float minVariance){
 
   return shadowc_reduceBleeding(shadowc_chebyshev(m . x, m . y, d, minVariance));
-#line 46
+#line 48
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 54
+#line 56
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 68
+#line 70
   return v;
 }
-#line 73
+#line 75
 float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 80
+#line 82
   float w = shadowc_searchTexels(r);
-#line 85
+#line 87
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
-#line 42 "lookup/shadowc_lookup.glsl"
+#line 44 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/vssm.glsl"
 #line 29
 ivec4 shadowc_vRoot;
@@ -419,8 +419,8 @@ float shadowc_vssm(ShadowcReceiver r){
 
   return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
 }
-#line 45 "lookup/shadowc_lookup.glsl"
-#line 50
+#line 47 "lookup/shadowc_lookup.glsl"
+#line 52
 bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
@@ -434,24 +434,24 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 67
+#line 69
 ivec4 shadowc_influenceRect(ShadowcReceiver r){
 
   ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
-#line 73
+#line 75
   ivec2 last = shadowc_mapSize()- 1;
   return ivec4(max(rect . xy - 1, ivec2(0)), min(rect . zw + 1, last));
 }
-#line 78
+#line 80
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 83
+#line 85
   float early = shadowc_earlyOut(shadowc_influenceRect(r), r . d);
   if(early >= 0.0)return early;
-#line 87
+#line 89
   float v = shadowc_vssm(r);
-#line 99
+#line 101
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"
