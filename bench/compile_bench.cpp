@@ -1,6 +1,7 @@
 // compile_bench: what in-process compilation buys. For each sample filter, the median of N
 //   (a) in-process compiles of the emitted GLSL (glslang + -O recipe + spirv-val, linked in),
-//   (b) full in-process `emitFilter` (plan, specialize, preprocess, compile, lookup, manifest),
+//   (b) a full in-process compile by the driver (load, check, plan, specialize, preprocess,
+//       compile, lookup, manifest: driver::compileFile),
 //   (c) the same work as (a) done by running the glslangValidator, spirv-opt and spirv-val
 //       programs on the emitted GLSL files (std::system: allowed here, in the benchmark only).
 // Prints a markdown table and the ratio (c)/(a). Usage: compile_bench [N] [sample-substring].
@@ -15,9 +16,7 @@
 #include <vector>
 
 #include "compiler/backend/spirv_backend.h"
-#include "compiler/emit/filter_emitter.h"
-#include "compiler/emit/output_writer.h"
-#include "compiler/spec/load_filter.h"
+#include "compiler/driver/driver.h"
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -51,28 +50,26 @@ int main(int argc, char** argv) {
   const std::string recipe = recipeFlags();
 
   fmt::print(
-      "| filter | shaders | in-process compile (ms) | full emitFilter (ms) | glslangValidator + spirv-opt + spirv-val "
+      "| filter | shaders | in-process compile (ms) | full driver compile (ms) | glslangValidator + spirv-opt + "
+      "spirv-val "
       "(ms) | external / in-process |\n");
   fmt::print("|---|---:|---:|---:|---:|---:|\n");
   std::vector<double> ratios;
   double sumIn = 0, sumExt = 0, sumFull = 0;
   for (const fs::path& file : samples) {
-    const shadowc::LoadResult loaded = shadowc::loadFilterFile(file.string());
-    if (!loaded.spec) {
-      fmt::print(stderr, "skipping {}: does not load\n", file.filename().string());
+    const shadowc::driver::Result r = shadowc::driver::compileFile(file.string());
+    if (!r.artifact) {
+      fmt::print(stderr, "skipping {}: does not compile\n{}", file.filename().string(), r.log);
       continue;
     }
-    const shadowc::FilterEmitResult r = shadowc::emitFilter(*loaded.spec);
-    if (!r.ok) {
-      fmt::print(stderr, "skipping {}: {}\n", file.filename().string(), r.log);
-      continue;
-    }
-    const fs::path dir = tmp / loaded.spec->name;
+    const std::string name = r.artifact->spec.name;
+    const fs::path dir = tmp / name;
     std::vector<std::pair<std::string, std::string>> shaders;  // stem, glsl
-    for (const auto& f : r.files)
-      if (f.name.ends_with(".glsl") && f.name != shadowc::lookupFileName(loaded.spec->name))
+    for (const auto& f : r.artifact->files)
+      if (f.name.ends_with(".glsl") && f.name != r.artifact->manifest.shade.glsl)
         shaders.emplace_back(f.name.substr(0, f.name.size() - 5), f.bytes);
-    if (!shadowc::writeFilesAtomically(dir, r.files).empty()) return 1;
+    // The external programs of (c) read the GLSL from disk.
+    if (!shadowc::driver::writeArtifact(dir, *r.artifact).empty()) return 1;
 
     std::vector<double> in, full, ext;
     for (int i = 0; i < n; ++i) {
@@ -82,7 +79,7 @@ int main(int argc, char** argv) {
         if (!res.ok) return 1;
       }
       auto t1 = Clock::now();
-      const auto again = shadowc::emitFilter(*loaded.spec);
+      const auto again = shadowc::driver::compileFile(file.string());
       auto t2 = Clock::now();
       if (!again.ok) return 1;
       for (const auto& [stem, glsl] : shaders) {
@@ -104,12 +101,12 @@ int main(int argc, char** argv) {
     const double a = median(in), b = median(full), c = median(ext);
     sumIn += a, sumFull += b, sumExt += c;
     ratios.push_back(c / a);
-    fmt::print("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f}× |\n", loaded.spec->name, shaders.size(), a, b, c, c / a);
+    fmt::print("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f}× |\n", name, shaders.size(), a, b, c, c / a);
   }
   fs::remove_all(tmp);
   if (ratios.empty()) return 1;
   fmt::print(
-      "\n{} filters, {} runs each (medians). Totals: in-process compile {:.0f} ms, full emitFilter {:.0f} ms, "
+      "\n{} filters, {} runs each (medians). Totals: in-process compile {:.0f} ms, full driver compile {:.0f} ms, "
       "external programs {:.0f} ms; external/in-process: median {:.2f}×, total {:.2f}×\n",
       ratios.size(), n, sumIn, sumFull, sumExt, median(ratios), sumExt / sumIn);
   return 0;

@@ -1,4 +1,4 @@
-// shadowc check FILE...: runs the front end (lex, parse, check) and prints diagnostics in glslc
+// shadowc check FILE...: runs the driver up to the checker (lex, parse, check) and prints diagnostics in glslc
 // form. Exit 0 when every file is clean, 1 when any has an error (warnings count with -Werror),
 // 2 on usage errors (CLI11). --print-spec prints each clean file's normalized spec as JSON.
 #include <fmt/core.h>
@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "cli/commands.h"
-#include "spec/load_filter.h"
+#include "driver/driver.h"
 
 namespace shadowc::cli {
 namespace {
@@ -43,15 +43,16 @@ CommandRunner registerCheck(CLI::App& app) {
     }
     int exitCode = 0;
     for (const std::string& file : opts->files) {
-      LoadOptions load;
-      load.warningsAsErrors = opts->werror;
-      const LoadResult result = loadFilterFile(file, load);
-      if (!result.diagnostics.empty()) {
+      driver::Options options;
+      options.warningsAsErrors = opts->werror;
+      options.stopAfter = driver::Stage::Check;
+      const driver::Result result = driver::compileFile(file, options);
+      if (!result.log.empty()) {
         std::fflush(stdout);
-        fmt::print(stderr, "{}", formatDiagnostics(result));
+        fmt::print(stderr, "{}", result.log);
         std::fflush(stderr);
       }
-      if (result.errorCount() > 0) exitCode = 1;
+      if (!result.ok) exitCode = 1;
       if (opts->printSpec && result.spec) fmt::print("{}\n", specToJson(*result.spec).dump(2));
     }
     return exitCode;

@@ -1,4 +1,4 @@
-// `shadowc compile FILE.shadow -o DIR`: front end -> planner -> emitter -> atomic write.
+// `shadowc compile FILE.shadow -o DIR`: the compiler driver (driver/driver.h), then an atomic write.
 // glslc-style flags (STYLE.md): -O / -O0, -M / -MD, -Werror; see docs/cli.md.
 #include <fmt/core.h>
 
@@ -11,11 +11,8 @@
 
 #include "backend/spirv_backend.h"
 #include "cli/commands.h"
+#include "driver/driver.h"
 #include "emit/depfile.h"
-#include "emit/filter_emitter.h"
-#include "emit/output_writer.h"
-#include "plan/planner.h"
-#include "spec/load_filter.h"
 
 namespace shadowc::cli {
 namespace {
@@ -32,28 +29,10 @@ struct CompileArgs {
   bool werror = false;
 };
 
-// Which file kinds --emit keeps: .glsl (passes and the lookup), .spv, manifest.json.
-bool keep(const std::string& file, const std::set<std::string>& kinds) {
-  if (file == kManifestFile) return kinds.count("manifest") > 0;
-  if (file.ends_with(".spv")) return kinds.count("spirv") > 0;
-  return kinds.count("glsl") > 0;
-}
-
 int error(const std::string& message) {
   std::fflush(stdout);
   fmt::print(stderr, "shadowc: error: {}\n", message);
   return 1;
-}
-
-// Output file names without compiling (for -M): the plan decides every name.
-std::vector<std::string> plannedOutputs(const FilterSpec& spec) {
-  std::set<std::string> names{kManifestFile, lookupFileName(spec.name)};
-  const PassGraph g = planPasses(spec);
-  for (const auto& s : g.sources) {
-    names.insert(s.stem + ".glsl");
-    names.insert(s.stem + ".spv");
-  }
-  return {names.begin(), names.end()};
 }
 
 int run(CompileArgs& a, CLI::App& sub) {
@@ -77,26 +56,37 @@ int run(CompileArgs& a, CLI::App& sub) {
     if (a.input.empty()) return 0;
   }
   if (a.input.empty()) return error("no input file (shadowc compile FILE.shadow -o DIR)");
-  std::set<std::string> kinds;
+  std::set<driver::OutputKind> kinds;
   {
     std::stringstream ss(a.emit);
     for (std::string k; std::getline(ss, k, ',');) {
-      if (k != "glsl" && k != "spirv" && k != "manifest")
+      if (k == "glsl")
+        kinds.insert(driver::OutputKind::Glsl);
+      else if (k == "spirv")
+        kinds.insert(driver::OutputKind::Spirv);
+      else if (k == "manifest")
+        kinds.insert(driver::OutputKind::Manifest);
+      else
         return error("--emit: unknown kind '" + k + "' (expected a subset of glsl,spirv,manifest)");
-      kinds.insert(k);
     }
+    if (kinds.empty()) return error("--emit: no kind given (expected a subset of glsl,spirv,manifest)");
   }
 
-  LoadOptions lo;
-  lo.warningsAsErrors = a.werror;
-  const LoadResult loaded = loadFilterFile(a.input, lo);
-  const std::string diags = formatDiagnostics(loaded);
-  if (!diags.empty()) {
+  // Stop as early as the request allows: --print-spec alone needs the checker, -M the plan.
+  driver::Options options;
+  options.optimize = a.optimize;
+  options.warningsAsErrors = a.werror;
+  if (a.outputDir.empty())
+    options.stopAfter = driver::Stage::Check;
+  else if (a.depsToStdout)
+    options.stopAfter = driver::Stage::Plan;
+  const driver::Result r = driver::compileFile(a.input, options);
+  if (!r.log.empty()) {
     std::fflush(stdout);
-    fmt::print(stderr, "{}", diags);
+    fmt::print(stderr, "{}", r.log);
   }
-  if (!loaded.spec) return 1;
-  const FilterSpec& spec = *loaded.spec;
+  if (!r.spec) return 1;
+  const FilterSpec& spec = *r.spec;
 
   if (a.printSpec) {
     fmt::print("{}\n", specToJson(spec).dump(2));
@@ -104,30 +94,24 @@ int run(CompileArgs& a, CLI::App& sub) {
   }
   if (a.outputDir.empty()) return error("no output directory (use -o DIR)");
   const std::filesystem::path dir(a.outputDir);
+  auto didNotCompile = [&] {
+    std::fflush(stdout);
+    fmt::print(stderr, "shadowc: error: filter '{}' did not compile; nothing was written\n", spec.name);
+    return 1;
+  };
+  if (!r.plan) return didNotCompile();
 
   std::vector<std::string> outputs;
-  for (const auto& f : plannedOutputs(spec))
-    if (keep(f, kinds)) outputs.push_back((dir / f).string());
+  for (const auto& f : driver::plannedOutputs(*r.plan, spec))
+    if (kinds.count(driver::outputKindOf(f))) outputs.push_back((dir / f).string());
   if (a.depsToStdout) {  // glslc -M: dependencies only, nothing compiled or written
     fmt::print("{}", makeDependencyRule(outputs, a.input));
     return 0;
   }
-
-  EmitOptions eo;
-  eo.optimize = a.optimize;
-  eo.warningsAsErrors = a.werror;
-  FilterEmitResult r = emitFilter(spec, eo);
-  if (!r.ok) {
-    std::fflush(stdout);
-    fmt::print(stderr, "{}", r.log);
-    fmt::print(stderr, "shadowc: error: filter '{}' did not compile; nothing was written\n", spec.name);
-    return 1;
-  }
-  std::vector<EmittedFile> files;
-  for (auto& f : r.files)
-    if (keep(f.name, kinds)) files.push_back(std::move(f));
-  if (a.depsFile) files.push_back({spec.name + ".d", makeDependencyRule(outputs, a.input)});
-  if (const std::string err = writeFilesAtomically(dir, files); !err.empty()) return error(err);
+  if (!r.artifact) return didNotCompile();
+  std::vector<EmittedFile> extra;
+  if (a.depsFile) extra.push_back({spec.name + ".d", makeDependencyRule(outputs, a.input)});
+  if (const std::string err = driver::writeArtifact(dir, *r.artifact, kinds, extra); !err.empty()) return error(err);
   return 0;
 }
 

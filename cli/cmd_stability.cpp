@@ -10,9 +10,9 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "driver/driver.h"
 #include "runtime/images/atomic_file.h"
 #include "runtime/vulkan/vulkan_context.h"
-#include "spec/load_filter.h"
 #include "validation/stability/stability_report.h"
 #include "validation/stability/stability_suite.h"
 
@@ -43,9 +43,11 @@ CommandRunner registerStability(CLI::App& app) {
     }
     std::optional<FilterSpec> userSpec;
     if (!opt->filter.empty()) {
-      const LoadResult loaded = loadFilterFile(opt->filter);
+      driver::Options check;
+      check.stopAfter = driver::Stage::Check;
+      const driver::Result loaded = driver::compileFile(opt->filter, check);
       if (!loaded.spec) {
-        fmt::print(stderr, "{}", formatDiagnostics(loaded));
+        fmt::print(stderr, "{}", loaded.log);
         return 1;
       }
       userSpec = *loaded.spec;

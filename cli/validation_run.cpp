@@ -1,105 +1,62 @@
 #include "cli/validation_run.h"
 
-#include <unistd.h>
+#include <fmt/core.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 
-#include <fmt/core.h>
-#include <nlohmann/json.hpp>
-
-#include "emit/filter_emitter.h"
-#include "emit/output_writer.h"
-#include "manifest/manifest.h"
-#include "runtime/executor/pass_executor.h"
+#include "driver/driver.h"
+#include "manifest/compiled_passes.h"
+#include "runtime/harness/scene_run.h"
 #include "runtime/images/atomic_file.h"
 #include "runtime/images/png_image.h"
-#include "runtime/metrics/metrics.h"
-#include "runtime/raster/rasterizer.h"
-#include "runtime/reference/embree_reference.h"
-#include "runtime/scene/frame_setup.h"
-#include "runtime/scene/scene.h"
 #include "runtime/vulkan/vulkan_context.h"
-#include "spec/load_filter.h"
 
 namespace shadowc::cli {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-// A temporary directory for the compiled filter, removed on scope exit.
-struct TempDir {
-  std::filesystem::path path;
-  TempDir() {
-    path = std::filesystem::temp_directory_path() / fmt::format("shadowc-validate-{}-{}", getpid(),
-                                                                Clock::now().time_since_epoch().count());
-    std::filesystem::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    std::filesystem::remove_all(path, ec);
-  }
-};
+bool isManifestPath(const std::string& path) {
+  const std::filesystem::path p(path);
+  return p.filename() == "manifest.json" ||
+         (std::filesystem::is_directory(p) && std::filesystem::exists(p / "manifest.json"));
+}
 
-// What validate runs: the manifest, the folder holding its .spv files, and the spec facts the
-// harness checks (light size against the scene's, the map size the precision checks assumed).
-struct CompiledPasses {
-  bool ok = false;
-  Manifest manifest;
-  std::filesystem::path dir;
-  std::shared_ptr<TempDir> temp;  // set when compiled here
+// The passes to run: a manifest written by `shadowc compile` (what an engine built earlier), or
+// a filter description compiled here by the driver. Empty when it did not compile (the driver's
+// log is on stderr).
+std::optional<CompiledPasses> passesToRun(const ValidationOptions& o) {
+  if (isManifestPath(o.filterPath) && o.filterSource.empty()) return CompiledPasses::fromDirectory(o.filterPath);
+  const driver::Result r =
+      o.filterSource.empty() ? driver::compileFile(o.filterPath) : driver::compileSource(o.filterSource, o.filterPath);
+  if (!r.log.empty()) fmt::print(stderr, "{}", r.log);
+  if (!r.artifact) return std::nullopt;
+  return r.artifact->passes();
+}
+
+// The spec facts the harness checks, from the manifest's normalized "spec" (the same JSON for a
+// filter compiled here): the light size a filter folded in, the map size its precision checks assumed.
+struct SpecFacts {
   bool lightFolded = false;
   double lightSize = 0;
   int mapSize = 1 << 30;
 };
-
-bool isManifestPath(const std::string& path) {
-  const std::filesystem::path p(path);
-  return p.filename() == "manifest.json" || (std::filesystem::is_directory(p) && std::filesystem::exists(p / "manifest.json"));
-}
-
-// A manifest written by `shadowc compile`: loadManifest rejects other format versions and
-// malformed files with one message; the spec facts come from its normalized "spec".
-CompiledPasses loadCompiled(const std::string& path) {
-  std::filesystem::path file(path);
-  if (std::filesystem::is_directory(file)) file /= "manifest.json";
-  CompiledPasses c;
-  c.manifest = loadManifest(file.string());
-  c.dir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
-  const nlohmann::json& spec = c.manifest.spec;
-  if (spec.contains("light") && spec["light"].contains("size_from_scene") && spec["light"]["size_from_scene"].is_boolean()) {
-    c.lightFolded = !spec["light"]["size_from_scene"].get<bool>();
-    c.lightSize = spec["light"].value("size", 0.0);
+SpecFacts specFacts(const Manifest& manifest) {
+  SpecFacts f;
+  const nlohmann::json& spec = manifest.spec;
+  if (spec.contains("light") && spec["light"].contains("size_from_scene") &&
+      spec["light"]["size_from_scene"].is_boolean()) {
+    f.lightFolded = !spec["light"]["size_from_scene"].get<bool>();
+    f.lightSize = spec["light"].value("size", 0.0);
   }
-  if (spec.contains("map_size") && spec["map_size"].is_number_integer()) c.mapSize = spec["map_size"].get<int>();
-  c.ok = true;
-  return c;
-}
-
-CompiledPasses compileHere(const ValidationOptions& o) {
-  CompiledPasses c;
-  const LoadResult loaded = o.filterSource.empty() ? loadFilterFile(o.filterPath)
-                                                   : loadFilterSource(o.filterSource, o.filterPath);
-  if (!loaded.diagnostics.empty()) fmt::print(stderr, "{}", formatDiagnostics(loaded));
-  if (!loaded.spec) return c;
-  const FilterSpec& spec = *loaded.spec;
-  const FilterEmitResult emitted = emitFilter(spec);
-  if (!emitted.ok) {
-    fmt::print(stderr, "{}", emitted.log);
-    return c;
-  }
-  c.temp = std::make_shared<TempDir>();
-  if (const std::string err = writeFilesAtomically(c.temp->path, emitted.files); !err.empty()) throw std::runtime_error(err);
-  c.manifest = emitted.manifest;
-  c.dir = c.temp->path;
-  c.lightFolded = !spec.light.sizeFromScene;
-  c.lightSize = spec.light.size;
-  c.mapSize = spec.mapSize;
-  c.ok = true;
-  return c;
+  if (spec.contains("map_size") && spec["map_size"].is_number_integer()) f.mapSize = spec["map_size"].get<int>();
+  return f;
 }
 
 void progress(const char* what) { fmt::print(stderr, "shadowc: {}\n", what); }
@@ -110,68 +67,63 @@ int runValidation(const ValidationOptions& o) {
   if (o.size == 0 || o.map == 0 || o.samples < 1 || o.runs < 1 || o.warmup < 0)
     throw std::invalid_argument("--size, --map, --samples and --runs must be positive, --warmup >= 0");
 
-  // 1. The passes to run: a compiled manifest (what an engine built earlier), or a filter
-  //    description compiled here in process into a temp dir.
-  const CompiledPasses compiled = isManifestPath(o.filterPath) && o.filterSource.empty()
-                                      ? loadCompiled(o.filterPath)
-                                      : compileHere(o);
-  if (!compiled.ok) return 1;
-  if (int(o.map) > compiled.mapSize)
-    throw std::invalid_argument(fmt::format("--map {} exceeds the filter's map_size {} (its precision checks assume at most that)",
-                                            o.map, compiled.mapSize));
-  const Manifest& manifest = compiled.manifest;
+  // 1. The passes to run.
+  const std::optional<CompiledPasses> compiled = passesToRun(o);
+  if (!compiled) return 1;
+  const SpecFacts facts = specFacts(compiled->manifest);
+  if (int(o.map) > facts.mapSize)
+    throw std::invalid_argument(fmt::format(
+        "--map {} exceeds the filter's map_size {} (its precision checks assume at most that)", o.map, facts.mapSize));
+  const Manifest& manifest = compiled->manifest;
 
-  // 2. Scene, frame, device, rasterized inputs.
-  const rt::Scene scene = rt::loadScene(o.scene);
-  const rt::FrameSetup setup = rt::setupFrame(scene, o.map, o.size, o.size);
+  // 2. Scene (its errors come before device errors), device, rasterized inputs and reference.
+  rt::Scene loaded = rt::loadScene(o.scene);
   // A filter that folds its own light size into the shader ignores the scene's light: the
   // reference traces the scene's light, so the error then measures the mismatch too.
-  if (compiled.lightFolded && std::abs(compiled.lightSize - double(scene.light.width)) > 1e-6 * scene.light.width)
-    fmt::print(stderr, "shadowc: warning: the filter's light size {} differs from scene '{}' light width {}; "
-                       "the reference uses the scene's light\n", compiled.lightSize, scene.name, scene.light.width);
+  if (facts.lightFolded && std::abs(facts.lightSize - double(loaded.light.width)) > 1e-6 * loaded.light.width)
+    fmt::print(stderr,
+               "shadowc: warning: the filter's light size {} differs from scene '{}' light width {}; "
+               "the reference uses the scene's light\n",
+               facts.lightSize, loaded.name, loaded.light.width);
   rt::VulkanContext ctx(rt::VulkanOptions{o.device, o.validation});
-  const rt::RasterOutputs raster = rt::rasterize(ctx, scene, setup);
-
-  // 3. Passes: inputs by role, timed runs (the last run leaves the visibility image).
-  rt::PassExecutor ex(ctx, manifest, compiled.dir, o.map, o.size, o.size);
-  ex.setFrame(setup.frame);
-  auto uploadRole = [&](ImageRole role, const rt::HostImage& image) {
-    const std::string name = ex.imageWithRole(role);
-    if (!name.empty()) ex.upload(name, image);
-  };
-  uploadRole(ImageRole::InputDepth, raster.lightDepth);
-  uploadRole(ImageRole::InputPosition, raster.gbufferPosition);
-  uploadRole(ImageRole::InputNormal, raster.gbufferNormal);
-  const std::string output = ex.imageWithRole(ImageRole::OutputVisibility);
-  if (output.empty()) throw std::runtime_error("the manifest has no output_visibility image");
-  progress(fmt::format("running {} passes ({} warm-up + {} timed runs) on {}", manifest.passes.size(), o.warmup,
-                       o.runs, ctx.deviceName()).c_str());
-  const rt::TimingResult timing = ex.time(o.warmup, o.runs);
-  const std::vector<float> result = ex.download(output).channel(0);
-
-  // 4. Ground truth and error.
-  const std::vector<float> positions = raster.gbufferPosition.floats();
-  const std::vector<float> normals = raster.gbufferNormal.floats();
+  rt::SceneSettings settings;
+  settings.scene = o.scene;
+  settings.screen = o.size;
+  settings.map = o.map;
+  settings.referenceSamples = o.samples;
+  settings.useCache = o.useCache;
   progress(fmt::format("tracing the Embree reference ({}x{} pixels, {}x{} light samples)", o.size, o.size, o.samples,
-                       o.samples).c_str());
+                       o.samples)
+               .c_str());
   auto last = Clock::now();
-  const rt::ReferenceResult reference = rt::traceReference(
-      scene, positions, normals, o.size, o.size, o.samples, {},
-      [&](const rt::ReferenceProgress& p) {
+  const std::shared_ptr<const rt::PreparedScene> prepared =
+      rt::prepareScene(ctx, std::move(loaded), settings, [&](double fraction, double seconds, double raysPerSecond) {
         if (Clock::now() - last < std::chrono::seconds(2)) return;
         last = Clock::now();
-        fmt::print(stderr, "shadowc: reference {:.0f}% ({:.1f} s, {:.1f} M rays/s)\n",
-                   100.0 * double(p.pixelsDone) / double(std::max<uint64_t>(1, p.pixelsTotal)), p.seconds,
-                   p.raysPerSecond * 1e-6);
-      },
-      o.useCache);
-  if (!reference.cacheWarning.empty()) fmt::print(stderr, "shadowc: warning: {}\n", reference.cacheWarning);
-  const rt::Metrics metrics = rt::computeMetrics(result, reference.visibility, rt::geometryMask(positions));
+        fmt::print(stderr, "shadowc: reference {:.0f}% ({:.1f} s, {:.1f} M rays/s)\n", 100.0 * fraction, seconds,
+                   raysPerSecond * 1e-6);
+      });
+  if (!prepared->referenceCacheWarning.empty())
+    fmt::print(stderr, "shadowc: warning: {}\n", prepared->referenceCacheWarning);
+  const rt::Scene& scene = prepared->scene;
+
+  // 3. Passes through the run harness: timed runs, metrics against the reference.
+  progress(fmt::format("running {} passes ({} warm-up + {} timed runs) on {}", manifest.passes.size(), o.warmup, o.runs,
+                       ctx.deviceName())
+               .c_str());
+  rt::RunOptions run;
+  run.warmup = o.warmup;
+  run.runs = o.runs;
+  const rt::SceneRunResult measured = rt::runOnScene(ctx, *compiled, *prepared, run);
+  const rt::TimingResult& timing = *measured.outputs.timing;
+  const std::vector<float>& result = measured.outputs.visibility;
+  const std::vector<float>& reference = prepared->reference;
+  const rt::Metrics& metrics = measured.metrics;
 
   // 5. Report.
   fmt::print("filter   {} ({} passes)\n", manifest.filter, manifest.passes.size());
   fmt::print("scene    {}  screen {}x{}  map {}^2  reference {}x{} samples{}\n", scene.name, o.size, o.size, o.map,
-             o.samples, o.samples, reference.fromCache ? " (cached)" : "");
+             o.samples, o.samples, prepared->referenceFromCache ? " (cached)" : "");
   fmt::print("device   {}\n", ctx.describe());
   fmt::print("timing   median of {} runs after {} warm-up, GPU timestamps\n", timing.runs, timing.warmup);
   for (const auto& p : timing.passes) fmt::print("  {:<16} {:<10} {:9.3f} ms\n", p.name, p.kind, p.medianMs);
@@ -207,9 +159,9 @@ int runValidation(const ValidationOptions& o) {
   if (!o.imagesDir.empty()) {
     const std::filesystem::path d(o.imagesDir);
     rt::writeVisibilityPng(d / "result.png", result, o.size, o.size);
-    rt::writeVisibilityPng(d / "reference.png", reference.visibility, o.size, o.size);
-    rt::writeErrorPng(d / "error.png", result, reference.visibility, o.size, o.size);
-    rt::writeComparisonPng(d / "comparison.png", result, reference.visibility, o.size, o.size);
+    rt::writeVisibilityPng(d / "reference.png", reference, o.size, o.size);
+    rt::writeErrorPng(d / "error.png", result, reference, o.size, o.size);
+    rt::writeComparisonPng(d / "comparison.png", result, reference, o.size, o.size);
     fmt::print("images   {}/{{result,reference,error,comparison}}.png\n", d.string());
   }
   if (messages > 0) {

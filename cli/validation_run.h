@@ -1,6 +1,6 @@
-// The body of `shadowc validate` and `shadowc demo`: compile a filter in process, rasterize a
-// scene, run the passes on the Vulkan device with per-pass timing, trace the Embree reference
-// and report the error. One place so that both commands measure the same way.
+// The body of `shadowc validate` and `shadowc demo`: compile a filter with the driver, prepare the
+// scene (rasterize + Embree reference) and run the passes through the run harness with per-pass
+// timing (runtime/harness/scene_run.h), then report. One place so both commands report alike.
 #pragma once
 
 #include <cstdint>
@@ -13,12 +13,12 @@ struct ValidationOptions {
   std::string filterPath;    // a .shadow file, or a label when filterSource is set
   std::string filterSource;  // the filter text itself (demo: embedded sample); empty = read filterPath
   std::string scene = "two_planes";
-  uint32_t size = 512;   // screen width = height
-  uint32_t map = 1024;   // shadow-map side
-  int samples = 16;      // reference light samples per axis
-  std::string jsonOut;   // empty = none
-  std::string imagesDir; // empty = none
-  std::string device;    // --device
+  uint32_t size = 512;    // screen width = height
+  uint32_t map = 1024;    // shadow-map side
+  int samples = 16;       // reference light samples per axis
+  std::string jsonOut;    // empty = none
+  std::string imagesDir;  // empty = none
+  std::string device;     // --device
   bool validation = false;
   int runs = 10, warmup = 3;
   bool useCache = true;  // reference cache

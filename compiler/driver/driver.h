@@ -12,12 +12,12 @@
 #include <string>
 #include <vector>
 
-#include "emit/content_hash.h"   // EmittedFile
+#include "emit/content_hash.h"  // EmittedFile
 #include "manifest/compiled_passes.h"
 #include "manifest/manifest.h"
 #include "plan/pass_graph.h"
 #include "spec/filter_spec.h"
-#include "spec/load_filter.h"    // Diagnostic
+#include "spec/load_filter.h"  // Diagnostic
 
 namespace shadowc::driver {
 
@@ -26,6 +26,8 @@ enum class Stage { Check, Plan, Emit };
 
 // What `--emit` keeps when the artifact is written (the artifact in memory always has all).
 enum class OutputKind { Glsl, Spirv, Manifest };
+// manifest.json -> Manifest, *.spv -> Spirv, everything else (pass .glsl, the lookup) -> Glsl.
+OutputKind outputKindOf(const std::string& fileName);
 
 struct Options {
   bool optimize = true;           // -O (default) / -O0

@@ -1,13 +1,12 @@
 #include "runtime/executor/pass_executor.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <bit>
 #include <cstring>
-#include <fstream>
 #include <map>
 #include <tuple>
-
-#include <fmt/core.h>
 
 #include "runtime/executor/spirv_reflect.h"
 #include "runtime/vulkan/vulkan_context.h"
@@ -24,13 +23,15 @@ bool isStorage(Access a) {
 
 uint32_t ceilDiv(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 
-std::vector<uint32_t> readSpirv(const std::filesystem::path& path, const Pass& pass) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in)
-    throw ExecutorError(fmt::format("pass '{}': SPIR-V file '{}' not found", pass.name, path.string()));
-  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+// The pass's module from the compiled files (little-endian words, as every .spv is stored).
+std::vector<uint32_t> spirvWords(const CompiledPasses& compiled, const Pass& pass) {
+  const auto it = compiled.files.find(pass.spirv);
+  if (it == compiled.files.end())
+    throw ExecutorError(fmt::format("pass '{}': SPIR-V file '{}' not found", pass.name, pass.spirv));
+  const std::string& bytes = it->second;
   if (bytes.empty() || bytes.size() % 4 != 0)
-    throw ExecutorError(fmt::format("pass '{}': '{}' is not a SPIR-V module ({} bytes)", pass.name, path.string(), bytes.size()));
+    throw ExecutorError(
+        fmt::format("pass '{}': '{}' is not a SPIR-V module ({} bytes)", pass.name, pass.spirv, bytes.size()));
   std::vector<uint32_t> words(bytes.size() / 4);
   std::memcpy(words.data(), bytes.data(), bytes.size());
   return words;
@@ -45,13 +46,17 @@ double median(std::vector<double> v) {
 
 }  // namespace
 
-std::array<uint32_t, 3> dispatchGroups(const Pass& pass, uint32_t mapSize, uint32_t screenWidth, uint32_t screenHeight) {
+std::array<uint32_t, 3> dispatchGroups(const Pass& pass, uint32_t mapSize, uint32_t screenWidth,
+                                       uint32_t screenHeight) {
   const auto [w, h] = extentOf(pass.dispatch.size, mapSize, screenWidth, screenHeight);
   const uint32_t lx = std::max(1u, pass.localSize[0]), ly = std::max(1u, pass.localSize[1]);
   switch (pass.dispatch.mode) {
-    case DispatchMode::Texels: return {ceilDiv(w, lx), ceilDiv(h, ly), 1};
-    case DispatchMode::Rows: return {ceilDiv(h, lx), 1, 1};
-    case DispatchMode::Columns: return {ceilDiv(w, lx), 1, 1};
+    case DispatchMode::Texels:
+      return {ceilDiv(w, lx), ceilDiv(h, ly), 1};
+    case DispatchMode::Rows:
+      return {ceilDiv(h, lx), 1, 1};
+    case DispatchMode::Columns:
+      return {ceilDiv(w, lx), 1, 1};
   }
   return {1, 1, 1};
 }
@@ -106,15 +111,17 @@ struct PassExecutor::Impl {
   VkImageView view(ImageResource& im, bool allLevels, int level, bool arrayed) {
     auto& v = im.views[{allLevels, level, arrayed}];
     if (!v.get())
-      v = createView(ctx, im.image, arrayed ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT,
-                     allLevels ? 0 : uint32_t(level), allLevels ? im.image.levels : 1);
+      v = createView(ctx, im.image, arrayed ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D,
+                     VK_IMAGE_ASPECT_COLOR_BIT, allLevels ? 0 : uint32_t(level), allLevels ? im.image.levels : 1);
     return v.get();
   }
 
   void createImages() {
     for (const auto& desc : manifest.images) {
-      if (imageIndex.count(desc.name)) throw ExecutorError(fmt::format("manifest: image '{}' is declared twice", desc.name));
-      if (desc.layers < 1) throw ExecutorError(fmt::format("manifest: image '{}' has {} layers", desc.name, desc.layers));
+      if (imageIndex.count(desc.name))
+        throw ExecutorError(fmt::format("manifest: image '{}' is declared twice", desc.name));
+      if (desc.layers < 1)
+        throw ExecutorError(fmt::format("manifest: image '{}' has {} layers", desc.name, desc.layers));
       imageIndex[desc.name] = images.size();
       images.push_back(ImageResource{desc, {}, false, false, {}, {}});
     }
@@ -184,8 +191,8 @@ struct PassExecutor::Impl {
         b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, im.image.levels, 0, im.image.layers};
         barriers.push_back(b);
       }
-      vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0, nullptr,
-                           uint32_t(barriers.size()), barriers.data());
+      vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
+                           nullptr, uint32_t(barriers.size()), barriers.data());
       const VkClearColorValue zero{};
       for (auto& im : images) {
         const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, im.image.levels, 0, im.image.layers};
@@ -194,7 +201,7 @@ struct PassExecutor::Impl {
     });
   }
 
-  void createPasses(const std::filesystem::path& dir) {
+  void createPasses(const CompiledPasses& compiled) {
     frame = createHostBuffer(ctx, sizeof(ShadowcFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(frame.mapped, 0, sizeof(ShadowcFrame));
 
@@ -215,7 +222,7 @@ struct PassExecutor::Impl {
     checkVk(vkCreateDescriptorPool(ctx.device(), &poolInfo, nullptr, &p), "vkCreateDescriptorPool");
     pool = UniqueDescriptorPool(ctx.device(), p);
 
-    for (const auto& pass : manifest.passes) passes.push_back(createPass(pass, dir));
+    for (const auto& pass : manifest.passes) passes.push_back(createPass(pass, compiled));
 
     VkQueryPoolCreateInfo q{VK_STRUCTURE_TYPE_QUERY_POOL_CREATE_INFO};
     q.queryType = VK_QUERY_TYPE_TIMESTAMP;
@@ -225,9 +232,9 @@ struct PassExecutor::Impl {
     queries = UniqueQueryPool(ctx.device(), qp);
   }
 
-  PassResource createPass(const Pass& pass, const std::filesystem::path& dir) {
+  PassResource createPass(const Pass& pass, const CompiledPasses& compiled) {
     PassResource r;
-    const std::vector<uint32_t> words = readSpirv(dir / pass.spirv, pass);
+    const std::vector<uint32_t> words = spirvWords(compiled, pass);
     ReflectedModule reflected;
     try {
       reflected = reflectSpirv(words);
@@ -241,18 +248,21 @@ struct PassExecutor::Impl {
     std::map<uint32_t, ReflectedBinding> declared;
     for (const auto& rb : reflected.bindings) {
       if (rb.set != 0)
-        throw ExecutorError(fmt::format("pass '{}': the shader uses descriptor set {} (only set 0 is supported)", pass.name, rb.set));
+        throw ExecutorError(
+            fmt::format("pass '{}': the shader uses descriptor set {} (only set 0 is supported)", pass.name, rb.set));
       declared[rb.binding] = rb;
     }
     std::map<uint32_t, const Binding*> listed;
     for (const auto& b : pass.bindings) {
-      if (listed.count(b.binding)) throw ExecutorError(fmt::format("pass '{}': binding {} is listed twice", pass.name, b.binding));
+      if (listed.count(b.binding))
+        throw ExecutorError(fmt::format("pass '{}': binding {} is listed twice", pass.name, b.binding));
       listed[b.binding] = &b;
     }
     for (const auto& [n, rb] : declared)
       if (!listed.count(n))
-        throw ExecutorError(fmt::format("pass '{}': the shader declares binding {} ({}) that the manifest does not list",
-                                        pass.name, n, rb.variable.empty() ? toString(rb.kind) : rb.variable));
+        throw ExecutorError(
+            fmt::format("pass '{}': the shader declares binding {} ({}) that the manifest does not list", pass.name, n,
+                        rb.variable.empty() ? toString(rb.kind) : rb.variable));
 
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
     for (const auto& b : pass.bindings) {
@@ -263,8 +273,9 @@ struct PassExecutor::Impl {
                                       : isStorage(b.access)       ? DescriptorKind::StorageImage
                                                                   : DescriptorKind::CombinedImageSampler;
       if (declared.count(b.binding) && declared[b.binding].kind != expected)
-        throw ExecutorError(fmt::format("pass '{}': binding {} ('{}') is {} in the manifest but a {} in the shader", pass.name,
-                                        b.binding, b.image, toString(b.access), toString(declared[b.binding].kind)));
+        throw ExecutorError(fmt::format("pass '{}': binding {} ('{}') is {} in the manifest but a {} in the shader",
+                                        pass.name, b.binding, b.image, toString(b.access),
+                                        toString(declared[b.binding].kind)));
       layoutBindings.push_back({b.binding, type, 1, VK_SHADER_STAGE_COMPUTE_BIT, nullptr});
     }
     VkDescriptorSetLayoutCreateInfo dsl{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO};
@@ -278,16 +289,24 @@ struct PassExecutor::Impl {
     uint32_t pushSize = 0;
     for (const auto& pc : pass.pushConstants) pushSize = std::max(pushSize, pc.offset + 4);
     if (pushSize > ctx.properties().limits.maxPushConstantsSize)
-      throw ExecutorError(fmt::format("pass '{}': {} bytes of push constants exceed the device limit {}", pass.name, pushSize,
-                                      ctx.properties().limits.maxPushConstantsSize));
+      throw ExecutorError(fmt::format("pass '{}': {} bytes of push constants exceed the device limit {}", pass.name,
+                                      pushSize, ctx.properties().limits.maxPushConstantsSize));
     r.push.assign(pushSize, 0);
     for (const auto& pc : pass.pushConstants) {
-      if (pc.offset % 4) throw ExecutorError(fmt::format("pass '{}': push constant '{}' offset {} is not 4-aligned", pass.name, pc.name, pc.offset));
+      if (pc.offset % 4)
+        throw ExecutorError(
+            fmt::format("pass '{}': push constant '{}' offset {} is not 4-aligned", pass.name, pc.name, pc.offset));
       uint32_t bits = 0;
       switch (pc.type) {
-        case ScalarType::U32: bits = uint32_t(pc.value); break;
-        case ScalarType::I32: bits = std::bit_cast<uint32_t>(int32_t(pc.value)); break;
-        case ScalarType::F32: bits = std::bit_cast<uint32_t>(float(pc.value)); break;
+        case ScalarType::U32:
+          bits = uint32_t(pc.value);
+          break;
+        case ScalarType::I32:
+          bits = std::bit_cast<uint32_t>(int32_t(pc.value));
+          break;
+        case ScalarType::F32:
+          bits = std::bit_cast<uint32_t>(float(pc.value));
+          break;
       }
       std::memcpy(r.push.data() + pc.offset, &bits, 4);
     }
@@ -311,7 +330,8 @@ struct PassExecutor::Impl {
     VkPipeline pipeline = VK_NULL_HANDLE;
     const VkResult pr = vkCreateComputePipelines(ctx.device(), VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline);
     if (pr != VK_SUCCESS)
-      throw ExecutorError(fmt::format("pass '{}': creating the compute pipeline failed: {}", pass.name, vkResultName(pr)));
+      throw ExecutorError(
+          fmt::format("pass '{}': creating the compute pipeline failed: {}", pass.name, vkResultName(pr)));
     r.pipeline = UniquePipeline(ctx.device(), pipeline);
 
     VkDescriptorSetAllocateInfo ai{VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO};
@@ -342,11 +362,13 @@ struct PassExecutor::Impl {
         const ReflectedBinding& rb = declared[b.binding];
         arrayed = rb.arrayed;
         if (multiLayer && !rb.arrayed)
-          throw ExecutorError(fmt::format("pass '{}': image '{}' has {} layers but binding {} is not an array image in the shader",
-                                          pass.name, b.image, im.image.layers, b.binding));
+          throw ExecutorError(
+              fmt::format("pass '{}': image '{}' has {} layers but binding {} is not an array image in the shader",
+                          pass.name, b.image, im.image.layers, b.binding));
         if (rb.kind == DescriptorKind::StorageImage && rb.format && *rb.format != im.desc.format)
-          throw ExecutorError(fmt::format("pass '{}': binding {} ('{}') is {} in the manifest but the shader declares {}",
-                                          pass.name, b.binding, b.image, toString(im.desc.format), toString(*rb.format)));
+          throw ExecutorError(
+              fmt::format("pass '{}': binding {} ('{}') is {} in the manifest but the shader declares {}", pass.name,
+                          b.binding, b.image, toString(im.desc.format), toString(*rb.format)));
       }
       if (isStorage(b.access)) {
         const int level = std::max(0, b.level);
@@ -412,16 +434,19 @@ struct PassExecutor::Impl {
   uint32_t queryCount() const { return 2 * (uint32_t(manifest.passes.size()) + 1); }
 };
 
-PassExecutor::PassExecutor(VulkanContext& ctx, const Manifest& manifest, const std::filesystem::path& manifestDir,
-                           uint32_t mapSize, uint32_t screenWidth, uint32_t screenHeight)
-    : impl_(std::make_unique<Impl>(ctx, manifest, mapSize, screenWidth, screenHeight)) {
+PassExecutor::PassExecutor(VulkanContext& ctx, const CompiledPasses& compiled, uint32_t mapSize, uint32_t screenWidth,
+                           uint32_t screenHeight)
+    : impl_(std::make_unique<Impl>(ctx, compiled.manifest, mapSize, screenWidth, screenHeight)) {
+  const Manifest& manifest = compiled.manifest;
   if (manifest.formatVersion != kManifestFormatVersion)
-    throw ExecutorError(fmt::format("manifest format version {} is not supported (this build runs version {}); "
-                                    "recompile the filter with this shadowc",
-                                    manifest.formatVersion, kManifestFormatVersion));
-  if (mapSize == 0 || screenWidth == 0 || screenHeight == 0) throw ExecutorError("map and screen sizes must be positive");
+    throw ExecutorError(
+        fmt::format("manifest format version {} is not supported (this build runs version {}); "
+                    "recompile the filter with this shadowc",
+                    manifest.formatVersion, kManifestFormatVersion));
+  if (mapSize == 0 || screenWidth == 0 || screenHeight == 0)
+    throw ExecutorError("map and screen sizes must be positive");
   impl_->createImages();
-  impl_->createPasses(manifestDir);
+  impl_->createPasses(compiled);
   impl_->record();
 }
 
@@ -441,9 +466,9 @@ void PassExecutor::upload(const std::string& name, const HostImage& data) {
   auto& im = impl_->image(name, "upload");
   if (data.width != im.image.width || data.height != im.image.height || data.layers != im.image.layers ||
       data.format != im.desc.format)
-    throw ExecutorError(fmt::format("upload '{}': got a {}x{}x{} {} image, the manifest needs {}x{}x{} {}", name, data.width,
-                                    data.height, data.layers, toString(data.format), im.image.width, im.image.height,
-                                    im.image.layers, toString(im.desc.format)));
+    throw ExecutorError(fmt::format("upload '{}': got a {}x{}x{} {} image, the manifest needs {}x{}x{} {}", name,
+                                    data.width, data.height, data.layers, toString(data.format), im.image.width,
+                                    im.image.height, im.image.layers, toString(im.desc.format)));
   if (data.bytes.size() != size_t(data.width) * data.height * data.layers * bytesPerTexel(data.format))
     throw ExecutorError(fmt::format("upload '{}': {} bytes do not match the image size", name, data.bytes.size()));
   Buffer staging = createHostBuffer(impl_->ctx, data.bytes.size(), VK_BUFFER_USAGE_TRANSFER_SRC_BIT);
@@ -489,7 +514,8 @@ TimingResult PassExecutor::time(int warmup, int runs) {
   }
   for (size_t i = 0; i < n; ++i) {
     const Pass& p = impl_->manifest.passes[i];
-    result.passes.push_back({p.name, p.kind, median(perPass[i]), *std::min_element(perPass[i].begin(), perPass[i].end())});
+    result.passes.push_back(
+        {p.name, p.kind, median(perPass[i]), *std::min_element(perPass[i].begin(), perPass[i].end())});
   }
   result.totalMs = median(totals);
   return result;
@@ -498,8 +524,8 @@ TimingResult PassExecutor::time(int warmup, int runs) {
 HostImage PassExecutor::download(const std::string& name, uint32_t level, uint32_t layer) {
   auto& im = impl_->image(name, "download");
   if (level >= im.image.levels || layer >= im.image.layers)
-    throw ExecutorError(fmt::format("download '{}': level {} layer {} outside {} levels x {} layers", name, level, layer,
-                                    im.image.levels, im.image.layers));
+    throw ExecutorError(fmt::format("download '{}': level {} layer {} outside {} levels x {} layers", name, level,
+                                    layer, im.image.levels, im.image.layers));
   const uint32_t w = std::max(1u, im.image.width >> level), h = std::max(1u, im.image.height >> level);
   HostImage out = HostImage::zeros(w, h, im.desc.format);
   Buffer staging = createHostBuffer(impl_->ctx, out.bytes.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
@@ -520,7 +546,8 @@ HostImage PassExecutor::download(const std::string& name, uint32_t level, uint32
     b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
     b.buffer = staging.buffer;
     b.size = VK_WHOLE_SIZE;
-    vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0, nullptr);
+    vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 0, nullptr, 1, &b, 0,
+                         nullptr);
   });
   std::memcpy(out.bytes.data(), staging.mapped, out.bytes.size());
   return out;

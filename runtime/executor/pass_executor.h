@@ -5,12 +5,12 @@
 
 #include <array>
 #include <cstdint>
-#include <filesystem>
 #include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "manifest/compiled_passes.h"
 #include "manifest/frame_uniforms.h"
 #include "manifest/manifest.h"
 #include "runtime/executor/host_image.h"
@@ -47,8 +47,11 @@ uint32_t mipLevelCount(const ImageDesc& image, uint32_t width, uint32_t height);
 
 class PassExecutor {
  public:
-  PassExecutor(VulkanContext& ctx, const Manifest& manifest, const std::filesystem::path& manifestDir, uint32_t mapSize,
-               uint32_t screenWidth, uint32_t screenHeight);
+  // The SPIR-V comes from memory: the driver's artifact (driver::Artifact::passes()) or a
+  // directory read by CompiledPasses::fromDirectory. Most callers want the run harness
+  // (runtime/harness/run_harness.h), which also uploads the inputs by role.
+  PassExecutor(VulkanContext& ctx, const CompiledPasses& compiled, uint32_t mapSize, uint32_t screenWidth,
+               uint32_t screenHeight);
   ~PassExecutor();
   PassExecutor(const PassExecutor&) = delete;
   PassExecutor& operator=(const PassExecutor&) = delete;

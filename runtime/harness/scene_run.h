@@ -20,10 +20,10 @@
 namespace shadowc::rt {
 
 struct SceneSettings {
-  std::string scene = "two_planes";  // a built-in name or a .json path (loadScene)
-  uint32_t screen = 256;              // square screen side
-  uint32_t map = 1024;                // shadow-map side
-  int referenceSamples = 16;          // light samples per axis for the Embree reference
+  std::string scene = "two_planes";      // a built-in name or a .json path (loadScene)
+  uint32_t screen = 256;                 // square screen side
+  uint32_t map = 1024;                   // shadow-map side
+  int referenceSamples = 16;             // light samples per axis for the Embree reference
   std::filesystem::path referenceCache;  // empty = the default cache ($SHADOWC_CACHE_DIR or ~/.cache/shadowc)
   bool useCache = true;
 };
@@ -43,7 +43,12 @@ struct PreparedScene {
 // Progress of the reference trace (fraction done, seconds so far), for a progress line.
 using ReferenceProgressFn = std::function<void(double fraction, double seconds, double raysPerSecond)>;
 
+// Loads settings.scene (loadScene: one located message for a bad name or file), then as below.
 std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, const SceneSettings& settings,
+                                                  const ReferenceProgressFn& progress = {});
+// A scene already loaded (a caller that looks at it before the device exists: `validate`
+// reports scene errors before device errors); settings.scene is only its label.
+std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scene, const SceneSettings& settings,
                                                   const ReferenceProgressFn& progress = {});
 
 struct SceneRunResult {

@@ -1,4 +1,4 @@
-// Shared by the emit tests: the sample filter files, and emitting a file or spec into a dir.
+// Shared by the emit tests: the sample filter files, compiled through the driver (driver/driver.h).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -8,9 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "emit/filter_emitter.h"
-#include "emit/output_writer.h"
-#include "spec/load_filter.h"
+#include "driver/driver.h"
 #include "support/test_support.h"
 
 namespace shadowc::test {
@@ -27,10 +25,26 @@ inline std::filesystem::path samplePath(const std::string& name) {
   return sourceDir() / "samples" / "filters" / (name + ".shadow");
 }
 
-inline FilterSpec loadSample(const std::string& name) {
-  const LoadResult r = loadFilterFile(samplePath(name).string());
-  if (!r.spec) throw std::runtime_error("sample " + name + " does not load:\n" + formatDiagnostics(r));
-  return *r.spec;
+inline driver::Options optimizeOption(bool optimize) {
+  driver::Options o;
+  o.optimize = optimize;
+  return o;
+}
+
+// A sample filter file through the whole pipeline.
+inline driver::Result compileSample(const std::string& name, bool optimize = true) {
+  return driver::compileFile(samplePath(name).string(), optimizeOption(optimize));
+}
+
+// A file of the artifact; fails the test when the compile failed or the file is absent.
+inline std::string artifactFile(const driver::Result& r, const std::string& name) {
+  if (!r.artifact) {
+    ADD_FAILURE() << "no artifact:\n" << r.log;
+    return {};
+  }
+  if (const std::string* bytes = r.artifact->file(name)) return *bytes;
+  ADD_FAILURE() << "no emitted file " << name;
+  return {};
 }
 
 // name -> bytes of every file in a directory.

@@ -3,17 +3,13 @@
 #include <gtest/gtest.h>
 
 #include "emit/emit_support.h"
+#include "emit/filter_emitter.h"  // lookupFileName
 #include "plan/test_specs.h"
 
 namespace shadowc {
 namespace {
 
-std::string file(const FilterEmitResult& r, const std::string& name) {
-  for (const auto& f : r.files)
-    if (f.name == name) return f.bytes;
-  ADD_FAILURE() << "no emitted file " << name;
-  return {};
-}
+std::string file(const driver::Result& r, const std::string& name) { return test::artifactFile(r, name); }
 
 // The body of `void name(...) { ... }` in GLSL text (brace matching).
 std::string functionBody(const std::string& glsl, const std::string& name) {
@@ -36,7 +32,7 @@ FilterSpec vssmTraversal(QuadtreeTraversal t) {
 }
 
 TEST(EmittedCode, DepthPcfShadeHasNoMomentsOrSatCode) {
-  const FilterEmitResult r = emitFilter(test::pcfSpec());
+  const driver::Result r = driver::compileSpec(test::pcfSpec());
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
   ASSERT_FALSE(shade.empty());
@@ -47,13 +43,13 @@ TEST(EmittedCode, DepthPcfShadeHasNoMomentsOrSatCode) {
 }
 
 TEST(EmittedCode, VssmShadeReadsTheIntegerSat) {
-  const FilterEmitResult r = emitFilter(test::vssmInt32Spec());
+  const driver::Result r = driver::compileSpec(test::vssmInt32Spec());
   ASSERT_TRUE(r.ok) << r.log;
   EXPECT_NE(file(r, "shade.glsl").find("usampler2DArray"), std::string::npos);
 }
 
 TEST(EmittedCode, UnrolledQuadtreeTraversalHasNoLoop) {
-  const FilterEmitResult r = emitFilter(vssmTraversal(QuadtreeTraversal::Unrolled));
+  const driver::Result r = driver::compileSpec(vssmTraversal(QuadtreeTraversal::Unrolled));
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
   const std::string body = functionBody(shade, "shadowc_qtUnrolledKernel");
@@ -65,7 +61,7 @@ TEST(EmittedCode, UnrolledQuadtreeTraversalHasNoLoop) {
 
 // Sibling: the table-driven traversal does carry the Next/Child tables (Algorithm 2).
 TEST(EmittedCode, TableQuadtreeTraversalCarriesNextChildTables) {
-  const FilterEmitResult r = emitFilter(vssmTraversal(QuadtreeTraversal::Table));
+  const driver::Result r = driver::compileSpec(vssmTraversal(QuadtreeTraversal::Table));
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
   EXPECT_NE(shade.find("shadowc_qtNext"), std::string::npos);
@@ -75,9 +71,9 @@ TEST(EmittedCode, TableQuadtreeTraversalCarriesNextChildTables) {
 
 TEST(EmittedCode, EmittedGlslIsPreprocessed) {
   for (const FilterSpec& spec : {test::vssmInt32Spec(), test::layeredEvsmSpec(), test::blurMipSpec()}) {
-    const FilterEmitResult r = emitFilter(spec);
+    const driver::Result r = driver::compileSpec(spec);
     ASSERT_TRUE(r.ok) << r.log;
-    for (const auto& f : r.files) {
+    for (const auto& f : r.artifact->files) {
       if (!f.name.ends_with(".glsl")) continue;
       for (const char* absent : {"#define", "#ifdef", "#ifndef", "#if ", "#include", "@shadowc:specialize"})
         EXPECT_EQ(f.bytes.find(absent), std::string::npos) << spec.name << "/" << f.name << " contains " << absent;
@@ -87,26 +83,26 @@ TEST(EmittedCode, EmittedGlslIsPreprocessed) {
 
 TEST(EmittedCode, LookupFileIsIncludableAndDescribedInTheManifest) {
   const FilterSpec spec = test::vssmInt32Spec();
-  const FilterEmitResult r = emitFilter(spec);
+  const driver::Result r = driver::compileSpec(spec);
   ASSERT_TRUE(r.ok) << r.log;
   const std::string lookup = file(r, lookupFileName(spec.name));
   EXPECT_EQ(lookup.find("\n#version"), std::string::npos);  // directives start lines
   EXPECT_EQ(lookup.find("\n#line"), std::string::npos);
-  EXPECT_NE(lookup.find(r.manifest.shade.signature), std::string::npos) << r.manifest.shade.signature;
-  EXPECT_EQ(r.manifest.shade.glsl, lookupFileName(spec.name));
-  for (const Binding& b : r.manifest.shade.bindings) EXPECT_TRUE(b.binding == 0 || b.binding >= 4) << b.binding;
+  EXPECT_NE(lookup.find(r.artifact->manifest.shade.signature), std::string::npos)
+      << r.artifact->manifest.shade.signature;
+  EXPECT_EQ(r.artifact->manifest.shade.glsl, lookupFileName(spec.name));
+  for (const Binding& b : r.artifact->manifest.shade.bindings)
+    EXPECT_TRUE(b.binding == 0 || b.binding >= 4) << b.binding;
 }
 
 TEST(EmittedCode, OptimizationLevelChangesSpirvAndTheHashButNotTheGlsl) {
   const FilterSpec spec = test::vssmInt32Spec();
-  EmitOptions o0;
-  o0.optimize = false;
-  const FilterEmitResult a = emitFilter(spec), b = emitFilter(spec, o0);
+  const driver::Result a = driver::compileSpec(spec), b = driver::compileSpec(spec, test::optimizeOption(false));
   ASSERT_TRUE(a.ok && b.ok) << a.log << b.log;
   EXPECT_EQ(file(a, "shade.glsl"), file(b, "shade.glsl"));
   EXPECT_NE(file(a, "shade.spv"), file(b, "shade.spv"));
   EXPECT_LT(file(a, "shade.spv").size(), file(b, "shade.spv").size()) << "the -O recipe should shrink the module";
-  EXPECT_NE(a.manifest.contentHash, b.manifest.contentHash);
+  EXPECT_NE(a.artifact->manifest.contentHash, b.artifact->manifest.contentHash);
 }
 
 }  // namespace

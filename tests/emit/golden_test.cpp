@@ -6,16 +6,17 @@
 #include <fstream>
 
 #include "emit/emit_support.h"
+#include "emit/filter_emitter.h"  // lookupFileName
 #include "plan/test_specs.h"
 
 namespace shadowc {
 namespace {
 
-void checkGoldens(const FilterSpec& spec) {
-  const FilterEmitResult r = emitFilter(spec);
+void checkGoldens(const driver::Result& r) {
   ASSERT_TRUE(r.ok) << r.log;
+  const FilterSpec& spec = r.artifact->spec;
   int compared = 0;
-  for (const EmittedFile& f : r.files) {
+  for (const EmittedFile& f : r.artifact->files) {
     if (!f.name.ends_with(".glsl") || f.name == lookupFileName(spec.name)) continue;  // lookup == shade's code
     const auto golden = test::sourceDir() / "tests" / "emit" / "golden" / spec.name / f.name;
     EXPECT_EQ(test::compareGolden(golden, f.bytes), "");
@@ -24,15 +25,15 @@ void checkGoldens(const FilterSpec& spec) {
   EXPECT_GE(compared, 1);
 }
 
-TEST(EmitGolden, VssmAdaptiveSample) { checkGoldens(test::loadSample("vssm_adaptive")); }
-TEST(EmitGolden, PcfPoisson16Sample) { checkGoldens(test::loadSample("pcf_poisson16")); }
-TEST(EmitGolden, LayeredVsmUniformSample) { checkGoldens(test::loadSample("layered_vsm_uniform")); }
-TEST(EmitGolden, PcssPoissonSample) { checkGoldens(test::loadSample("pcss_poisson")); }
-TEST(EmitGolden, PcfDepthOnly) { checkGoldens(test::pcfSpec()); }
-TEST(EmitGolden, VssmInt32WithMinMax) { checkGoldens(test::vssmInt32Spec()); }
-TEST(EmitGolden, LayeredEvsm4Fp16) { checkGoldens(test::layeredEvsmSpec()); }
-TEST(EmitGolden, PowerCdfBlurMips) { checkGoldens(test::blurMipSpec()); }
-TEST(EmitGolden, MsmUnorm16Sample) { checkGoldens(test::loadSample("msm_unorm16")); }
+TEST(EmitGolden, VssmAdaptiveSample) { checkGoldens(test::compileSample("vssm_adaptive")); }
+TEST(EmitGolden, PcfPoisson16Sample) { checkGoldens(test::compileSample("pcf_poisson16")); }
+TEST(EmitGolden, LayeredVsmUniformSample) { checkGoldens(test::compileSample("layered_vsm_uniform")); }
+TEST(EmitGolden, PcssPoissonSample) { checkGoldens(test::compileSample("pcss_poisson")); }
+TEST(EmitGolden, PcfDepthOnly) { checkGoldens(driver::compileSpec(test::pcfSpec())); }
+TEST(EmitGolden, VssmInt32WithMinMax) { checkGoldens(driver::compileSpec(test::vssmInt32Spec())); }
+TEST(EmitGolden, LayeredEvsm4Fp16) { checkGoldens(driver::compileSpec(test::layeredEvsmSpec())); }
+TEST(EmitGolden, PowerCdfBlurMips) { checkGoldens(driver::compileSpec(test::blurMipSpec())); }
+TEST(EmitGolden, MsmUnorm16Sample) { checkGoldens(test::compileSample("msm_unorm16")); }
 
 // The sibling that proves the comparison can fail.
 TEST(EmitGolden, AChangedByteIsReported) {

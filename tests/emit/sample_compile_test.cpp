@@ -1,4 +1,4 @@
-// Every sample filter compiles in process, and every written .spv passes spirv-val again when
+// Every sample filter compiles in process (the driver), and every written .spv passes spirv-val again when
 // read back from disk; the manifest names only files that exist. Samples are discovered at run
 // time, so a new samples/filters/*.shadow is covered without editing this test.
 #include <gtest/gtest.h>
@@ -12,13 +12,11 @@ namespace {
 class SampleCompile : public ::testing::TestWithParam<std::string> {};
 
 void compileAndCheck(const std::string& sample, bool optimize) {
-  const FilterSpec spec = test::loadSample(sample);
-  EmitOptions o;
-  o.optimize = optimize;
-  const FilterEmitResult r = emitFilter(spec, o);
+  const driver::Result r = test::compileSample(sample, optimize);
   ASSERT_TRUE(r.ok) << sample << ":\n" << r.log;
+  const FilterSpec& spec = r.artifact->spec;
   const auto dir = test::freshTempDir("sample-" + sample);
-  ASSERT_EQ(writeFilesAtomically(dir, r.files), "");
+  ASSERT_EQ(driver::writeArtifact(dir, *r.artifact), "");
   const auto files = test::readDir(dir);
   int spv = 0;
   for (const auto& [name, bytes] : files)
@@ -42,12 +40,11 @@ TEST_P(SampleCompile, OptimizedCompilesAndEveryWrittenSpvValidates) { compileAnd
 TEST_P(SampleCompile, UnoptimizedCompilesAndEveryWrittenSpvValidates) { compileAndCheck(GetParam(), false); }
 
 TEST_P(SampleCompile, RecompilingGivesByteIdenticalFiles) {
-  const FilterSpec spec = test::loadSample(GetParam());
   const auto a = test::freshTempDir("det-a"), b = test::freshTempDir("det-b");
-  const FilterEmitResult ra = emitFilter(spec), rb = emitFilter(spec);
+  const driver::Result ra = test::compileSample(GetParam()), rb = test::compileSample(GetParam());
   ASSERT_TRUE(ra.ok && rb.ok) << ra.log << rb.log;
-  ASSERT_EQ(writeFilesAtomically(a, ra.files), "");
-  ASSERT_EQ(writeFilesAtomically(b, rb.files), "");
+  ASSERT_EQ(driver::writeArtifact(a, *ra.artifact), "");
+  ASSERT_EQ(driver::writeArtifact(b, *rb.artifact), "");
   const auto fa = test::readDir(a), fb = test::readDir(b);
   ASSERT_EQ(fa.size(), fb.size());
   for (const auto& [name, bytes] : fa) EXPECT_TRUE(fb.at(name) == bytes) << name << " differs between two compiles";

@@ -1,7 +1,8 @@
 // Shared by the accuracy, closed-form and end-to-end GPU tests: compile a filter description
-// in process (once per process and label), run its passes on lavapipe either on a rasterized
-// built-in scene or on crafted inputs (a depth map and G-buffer receivers placed exactly with
-// an identity light view), and compare against the Embree ground truth.
+// with the driver (once per process and label), run its passes through the run harness on
+// lavapipe, either on a prepared built-in scene (rt::prepareScene + rt::runOnScene, compared with
+// the Embree ground truth) or on crafted inputs (a depth map and G-buffer receivers placed
+// exactly with an identity light view; rt::runPasses).
 #pragma once
 
 #include <fmt/core.h>
@@ -15,16 +16,11 @@
 #include <string>
 #include <vector>
 
-#include "emit/filter_emitter.h"
-#include "emit/output_writer.h"
+#include "driver/driver.h"
 #include "manifest/frame_uniforms.h"
-#include "runtime/executor/pass_executor.h"
+#include "runtime/harness/run_harness.h"
+#include "runtime/harness/scene_run.h"
 #include "runtime/metrics/metrics.h"
-#include "runtime/raster/rasterizer.h"
-#include "runtime/reference/embree_reference.h"
-#include "runtime/scene/frame_setup.h"
-#include "runtime/scene/scene.h"
-#include "spec/load_filter.h"
 #include "support/test_support.h"
 #include "validation/stability/crafted_run.h"
 
@@ -32,42 +28,29 @@ namespace shadowc::test {
 
 struct CompiledFilter {
   FilterSpec spec;
-  Manifest manifest;
-  std::filesystem::path dir;  // manifest.json, *.spv
+  CompiledPasses passes;  // manifest + SPIR-V in memory
 };
 
 inline std::string sampleSource(const std::string& name) {
   return readFile(sourceDir() / "samples" / "filters" / (name + ".shadow"));
 }
 
-// Compiles `source` once per process under `label` (the compiled files stay in a temp dir for
-// the whole run). Fails the test (fatal) when it does not compile.
+// Compiles `source` once per process under `label`. Fails the test (fatal) when it does not compile.
 inline const CompiledFilter* compileFilterCached(const std::string& label, const std::string& source,
                                                  bool optimize = true) {
   static std::map<std::string, std::unique_ptr<CompiledFilter>> cache;
   auto it = cache.find(label);
   if (it != cache.end()) return it->second.get();
-  const LoadResult loaded = loadFilterSource(source, label + ".shadow");
-  if (!loaded.spec) {
-    ADD_FAILURE() << label << ": " << formatDiagnostics(loaded);
-    return nullptr;
-  }
-  EmitOptions options;
+  driver::Options options;
   options.optimize = optimize;
-  const FilterEmitResult emitted = emitFilter(*loaded.spec, options);
-  if (!emitted.ok) {
-    ADD_FAILURE() << label << ": " << emitted.log;
+  const driver::Result compiled = driver::compileSource(source, label + ".shadow", options);
+  if (!compiled.artifact) {
+    ADD_FAILURE() << label << ": " << compiled.log;
     return nullptr;
   }
   auto cf = std::make_unique<CompiledFilter>();
-  cf->spec = *loaded.spec;
-  cf->manifest = emitted.manifest;
-  cf->dir = freshTempDir("accuracy_" + label);
-  const std::string err = writeFilesAtomically(cf->dir, emitted.files);
-  if (!err.empty()) {
-    ADD_FAILURE() << err;
-    return nullptr;
-  }
+  cf->spec = compiled.artifact->spec;
+  cf->passes = compiled.artifact->passes();
   return (cache[label] = std::move(cf)).get();
 }
 
@@ -106,25 +89,11 @@ inline CraftedGBuffer craftGBuffer(const std::vector<Receiver>& receivers, uint3
           rt::HostImage::fromFloats(w, h, ImageFormat::RGBA32F, nrm)};
 }
 
-// An executor for a compiled filter with the three inputs uploaded by role.
-inline std::unique_ptr<rt::PassExecutor> makeExecutor(rt::VulkanContext& ctx, const CompiledFilter& cf, uint32_t map,
-                                                      uint32_t w, uint32_t h, const ShadowcFrame& frame,
-                                                      const rt::HostImage& depth, const rt::HostImage& position,
-                                                      const rt::HostImage& normal) {
-  auto ex = std::make_unique<rt::PassExecutor>(ctx, cf.manifest, cf.dir, map, w, h);
-  ex->setFrame(frame);
-  auto uploadRole = [&](ImageRole role, const rt::HostImage& image) {
-    const std::string name = ex->imageWithRole(role);
-    if (!name.empty()) ex->upload(name, image);
-  };
-  uploadRole(ImageRole::InputDepth, depth);
-  uploadRole(ImageRole::InputPosition, position);
-  uploadRole(ImageRole::InputNormal, normal);
-  return ex;
-}
-
-inline std::vector<float> downloadVisibility(rt::PassExecutor& ex) {
-  return ex.download(ex.imageWithRole(ImageRole::OutputVisibility)).channel(0);
+// Crafted inputs for the run harness: an R32F depth map and a crafted G-buffer.
+inline rt::RunInputs craftedInputs(uint32_t map, uint32_t w, uint32_t h, const ShadowcFrame& frame,
+                                   const std::vector<float>& depth, const CraftedGBuffer& g) {
+  return rt::RunInputs{frame,      map,     w, h, rt::HostImage::fromFloats(map, map, ImageFormat::R32F, depth),
+                       g.position, g.normal};
 }
 
 // Reference cache next to the shadowc binary (the build dir), never the user's cache.
@@ -132,38 +101,20 @@ inline std::filesystem::path referenceCacheDir() {
   return std::filesystem::path(SHADOWC_BINARY).parent_path() / "accuracy-reference-cache";
 }
 
-// One rasterized scene with its Embree reference, computed once per process per key.
-struct SceneCase {
-  rt::Scene scene;
-  rt::FrameSetup setup;
-  rt::RasterOutputs raster;
-  std::vector<float> reference;
-  std::vector<uint8_t> mask;
-};
-inline const SceneCase& sceneCase(rt::VulkanContext& ctx, const std::string& name, uint32_t map, uint32_t screen,
-                                  int samples) {
-  static std::map<std::string, std::unique_ptr<SceneCase>> cache;
+// One rasterized scene with its Embree reference, prepared once per process per key.
+inline const rt::PreparedScene& sceneCase(rt::VulkanContext& ctx, const std::string& name, uint32_t map,
+                                          uint32_t screen, int samples) {
+  static std::map<std::string, std::shared_ptr<const rt::PreparedScene>> cache;
   const std::string key = fmt::format("{}/{}/{}/{}", name, map, screen, samples);
   auto it = cache.find(key);
   if (it != cache.end()) return *it->second;
-  auto sc = std::make_unique<SceneCase>();
-  sc->scene = rt::loadScene(name);
-  sc->setup = rt::setupFrame(sc->scene, map, screen, screen);
-  sc->raster = rt::rasterize(ctx, sc->scene, sc->setup);
-  const std::vector<float> positions = sc->raster.gbufferPosition.floats();
-  const rt::ReferenceResult ref = rt::traceReference(sc->scene, positions, sc->raster.gbufferNormal.floats(), screen,
-                                                     screen, samples, referenceCacheDir());
-  sc->reference = ref.visibility;
-  sc->mask = rt::geometryMask(positions);
-  return *(cache[key] = std::move(sc));
-}
-
-// Runs every pass of the filter on the scene's rasterized inputs; the visibility image.
-inline std::vector<float> runOnScene(rt::VulkanContext& ctx, const CompiledFilter& cf, const SceneCase& sc) {
-  auto ex = makeExecutor(ctx, cf, sc.setup.mapSize, sc.setup.width, sc.setup.height, sc.setup.frame,
-                         sc.raster.lightDepth, sc.raster.gbufferPosition, sc.raster.gbufferNormal);
-  ex->run();
-  return downloadVisibility(*ex);
+  rt::SceneSettings settings;
+  settings.scene = name;
+  settings.screen = screen;
+  settings.map = map;
+  settings.referenceSamples = samples;
+  settings.referenceCache = referenceCacheDir();
+  return *(cache[key] = rt::prepareScene(ctx, settings));
 }
 
 // Largest |a - b| over two equally long arrays, with its index; NaN counts as infinite.

@@ -71,9 +71,8 @@ TEST_P(AccuracyTest, AgainstEmbreeReference) {
       << c.sample << " folds its light size: compare a copy with size: scene";
   for (const SceneBound& b : c.scenes) {
     SCOPED_TRACE(b.scene);
-    const SceneCase& sc = sceneCase(context(), b.scene, kMap, kScreen, kSamples);
-    const std::vector<float> result = runOnScene(context(), *cf, sc);
-    const rt::Metrics m = rt::computeMetrics(result, sc.reference, sc.mask);
+    const rt::PreparedScene& sc = sceneCase(context(), b.scene, kMap, kScreen, kSamples);
+    const rt::Metrics m = rt::runOnScene(context(), cf->passes, sc).metrics;
     ASSERT_GT(m.compared, kScreen * kScreen / 8) << "too few geometry pixels";
     EXPECT_EQ(m.nonFinite, 0u);
     EXPECT_EQ(m.outOfRange, 0u);
@@ -98,11 +97,12 @@ TEST_F(VulkanTest, AccuracyBoundsRejectAWrongResult) {
   ASSERT_NE(pcss, nullptr);
   const CompiledFilter* cf = compileFilterCached(pcss->sample, caseSource(*pcss), pcss->optimize);
   ASSERT_NE(cf, nullptr);
-  const SceneCase& sc = sceneCase(context(), "two_planes", kMap, kScreen, kSamples);
-  std::vector<float> result = runOnScene(context(), *cf, sc);
+  const rt::PreparedScene& sc = sceneCase(context(), "two_planes", kMap, kScreen, kSamples);
+  const rt::SceneRunResult run = rt::runOnScene(context(), cf->passes, sc);
   const double bound = pcss->scenes[0].rmse;
   ASSERT_STREQ(pcss->scenes[0].scene, "two_planes");
-  EXPECT_LE(rt::computeMetrics(result, sc.reference, sc.mask).rmse, bound);
+  EXPECT_LE(run.metrics.rmse, bound);
+  const std::vector<float>& result = run.outputs.visibility;
   std::vector<float> hard = result, dark = result;
   for (float& v : hard) v = v < 0.5f ? 0.0f : 1.0f;
   for (float& v : dark) v = v < 1.0f ? 0.5f * v : v;
@@ -113,7 +113,7 @@ TEST_F(VulkanTest, AccuracyBoundsRejectAWrongResult) {
 // Moment shadow maps bleed less than plain VSM where two occluders overlap (Peters & Klein 2015
 // sec. 3; lauritzen2008 Fig. 2): on stacked_planes, the mean visibility over the pixels the
 // reference puts in umbra (< 0.05), both with the same gaussian(2) prefilter and fp32 storage.
-double umbraLeak(const std::vector<float>& result, const SceneCase& sc) {
+double umbraLeak(const std::vector<float>& result, const rt::PreparedScene& sc) {
   double sum = 0;
   size_t n = 0;
   for (size_t i = 0; i < result.size(); ++i)
@@ -122,7 +122,7 @@ double umbraLeak(const std::vector<float>& result, const SceneCase& sc) {
 }
 
 TEST_F(VulkanTest, MsmBleedsLessThanVsmOnStackedPlanes) {
-  const SceneCase& sc = sceneCase(context(), "stacked_planes", kMap, kScreen, kSamples);
+  const rt::PreparedScene& sc = sceneCase(context(), "stacked_planes", kMap, kScreen, kSamples);
   double leak[2] = {0, 0};
   const char* names[2] = {"vsm_chebyshev", "msm_blur"};
   for (int i = 0; i < 2; ++i) {
@@ -130,7 +130,7 @@ TEST_F(VulkanTest, MsmBleedsLessThanVsmOnStackedPlanes) {
     ASSERT_NE(cf, nullptr);
     ASSERT_EQ(cf->spec.prefilter.blur, BlurKind::Gaussian);
     ASSERT_EQ(cf->spec.prefilter.blurRadius, 2);
-    leak[i] = umbraLeak(runOnScene(context(), *cf, sc), sc);
+    leak[i] = umbraLeak(rt::runOnScene(context(), cf->passes, sc).outputs.visibility, sc);
   }
   fmt::print("stacked_planes umbra leak: vsm_chebyshev {:.5f}, msm_blur {:.5f}\n", leak[0], leak[1]);
   EXPECT_GT(leak[0], 1e-3);  // not vacuous: VSM does leak here

@@ -42,14 +42,16 @@ struct LookupRun {
 LookupRun runLookup(rt::VulkanContext& ctx, const CompiledFilter& cf, const std::vector<float>& depth,
                     const std::vector<Receiver>& receivers) {
   const CraftedGBuffer g = craftGBuffer(receivers, kScreen, kScreen);
-  auto ex = makeExecutor(ctx, cf, kMap, kScreen, kScreen, identityFrame(kMap, kScreen, kScreen, 0.5f),
-                         rt::HostImage::fromFloats(kMap, kMap, ImageFormat::R32F, depth), g.position, g.normal);
-  ex->run();
+  rt::RunOptions options;
+  for (const auto& im : cf.passes.manifest.images)
+    if (im.name == "moments") options.downloads.push_back("moments");
+  rt::RunOutputs out = rt::runPasses(
+      ctx, cf.passes, craftedInputs(kMap, kScreen, kScreen, identityFrame(kMap, kScreen, kScreen, 0.5f), depth, g),
+      options);
   LookupRun r;
-  r.visibility = downloadVisibility(*ex);
+  r.visibility = std::move(out.visibility);
   r.visibility.resize(receivers.size());
-  for (const auto& im : cf.manifest.images)
-    if (im.name == "moments") r.moments = ex->download("moments").floats();
+  if (out.images.count("moments")) r.moments = out.images.at("moments").floats();
   return r;
 }
 

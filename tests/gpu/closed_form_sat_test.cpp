@@ -42,11 +42,11 @@ struct SatRun {
 
 SatRun runSatPasses(rt::VulkanContext& ctx, const CompiledFilter& cf) {
   const auto g = craftGBuffer({}, 8, 8);
-  auto ex =
-      makeExecutor(ctx, cf, kMap, 8, 8, identityFrame(kMap, 8, 8, 0.5f),
-                   rt::HostImage::fromFloats(kMap, kMap, ImageFormat::R32F, craftedDepth(kMap)), g.position, g.normal);
-  ex->run();
-  return {ex->download("moments").floats(), ex->download("sat")};
+  rt::RunOptions options;
+  options.downloads = {"moments", "sat"};
+  rt::RunOutputs out = rt::runPasses(
+      ctx, cf.passes, craftedInputs(kMap, 8, 8, identityFrame(kMap, 8, 8, 0.5f), craftedDepth(kMap), g), options);
+  return {out.images.at("moments").floats(), std::move(out.images.at("sat"))};
 }
 
 // Counts texels whose channels differ from the reference; names the first.

@@ -22,12 +22,12 @@ TEST_F(EndToEndPcfTest, Pcf5x5OnTwoPlanesMatchesCpuPcfAndSeparatesMethodError) {
   constexpr uint32_t kScreen = 128, kMap = 512;
   const CompiledFilter* cf = compileFilterCached("pcf_grid5x5", sampleSource("pcf_grid5x5"));
   ASSERT_NE(cf, nullptr);
-  const SceneCase& sc = sceneCase(context(), "two_planes", kMap, kScreen, 8);
-  auto ex = makeExecutor(context(), *cf, kMap, kScreen, kScreen, sc.setup.frame, sc.raster.lightDepth,
-                         sc.raster.gbufferPosition, sc.raster.gbufferNormal);
-  ex->run();
-  const std::vector<float> gpu = downloadVisibility(*ex);
-  const std::vector<float> depth = ex->download("shadow_depth").channel(0);  // what the shader read
+  const rt::PreparedScene& sc = sceneCase(context(), "two_planes", kMap, kScreen, 8);
+  rt::RunOptions options;
+  options.downloads = {"shadow_depth"};
+  const rt::SceneRunResult run = rt::runOnScene(context(), cf->passes, sc, options);
+  const std::vector<float>& gpu = run.outputs.visibility;
+  const std::vector<float> depth = run.outputs.images.at("shadow_depth").channel(0);  // what the shader read
 
   // CPU PCF at each receiver: frame.glsl light space and bias.glsl's slope-scaled bias, in double.
   const BiasSpec& bias = cf->spec.bias;

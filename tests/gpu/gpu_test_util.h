@@ -1,6 +1,9 @@
-// Helpers for GPU tests: inline GLSL -> .spv files, hand-written manifests, image comparison
+// Helpers for GPU tests: inline GLSL -> SPIR-V bytes for hand-written manifests, image comparison
 // with a tolerance that reports the worst texel (and can be shown to fail).
 #pragma once
+
+#include <fmt/core.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <filesystem>
@@ -8,30 +11,31 @@
 #include <functional>
 #include <string>
 
-#include <fmt/core.h>
-#include <gtest/gtest.h>
-
 #include "backend/spirv_backend.h"
 #include "runtime/executor/host_image.h"
 
 namespace shadowc::test {
 
-// Compiles compute GLSL (with templates/frame.glsl includable) and writes DIR/NAME.
-inline void writeComputeSpirv(const std::filesystem::path& dir, const std::string& name, const std::string& glsl) {
+// Compiles compute GLSL (with templates/frame.glsl includable) to the bytes of a .spv file, for
+// CompiledPasses::files. A compile error fails the test (the executor then sees no module).
+inline std::string computeSpirv(const std::string& name, const std::string& glsl) {
   const IncludeResolver includes = [](const std::string& file) -> std::optional<std::string> {
     std::ifstream in(std::filesystem::path(SHADOWC_SOURCE_DIR) / "templates" / file);
     if (!in) return std::nullopt;
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   };
   const SpirvResult r = compileGlsl(glsl, ShaderStage::Compute, name, includes, BackendOptions{});
-  ASSERT_TRUE(r.ok) << r.log;
-  std::ofstream out(dir / name, std::ios::binary);
-  out.write(reinterpret_cast<const char*>(r.words.data()), std::streamsize(r.words.size() * 4));
+  if (!r.ok) {
+    ADD_FAILURE() << name << ": " << r.log;
+    return {};
+  }
+  return std::string(reinterpret_cast<const char*>(r.words.data()), r.words.size() * 4);
 }
 
 // Every texel of channel 0 (layer 0) within `tolerance` of expected(x, y); the message names
 // the worst texel.
-inline ::testing::AssertionResult imageMatches(const rt::HostImage& image, const std::function<double(uint32_t, uint32_t)>& expected,
+inline ::testing::AssertionResult imageMatches(const rt::HostImage& image,
+                                               const std::function<double(uint32_t, uint32_t)>& expected,
                                                double tolerance) {
   double worst = -1;
   uint32_t wx = 0, wy = 0;
@@ -45,8 +49,8 @@ inline ::testing::AssertionResult imageMatches(const rt::HostImage& image, const
       }
     }
   if (worst <= tolerance) return ::testing::AssertionSuccess();
-  return ::testing::AssertionFailure() << fmt::format("texel ({}, {}) is {} but should be {} (error {} > tolerance {})", wx, wy,
-                                                      image.texel(wx, wy), expected(wx, wy), worst, tolerance);
+  return ::testing::AssertionFailure() << fmt::format("texel ({}, {}) is {} but should be {} (error {} > tolerance {})",
+                                                      wx, wy, image.texel(wx, wy), expected(wx, wy), worst, tolerance);
 }
 
 }  // namespace shadowc::test

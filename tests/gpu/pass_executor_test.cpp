@@ -1,12 +1,16 @@
 // PassExecutor on lavapipe with hand-written manifests and inline GLSL: exact results, every
 // dispatch mode, push constants, the frame UBO, layered/mipped images, timing and the errors
 // a bad manifest must produce. Validation on; zero messages allowed.
+#include "runtime/executor/pass_executor.h"
+
 #include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
+#include <map>
+#include <string>
+
 #include "gpu/gpu_test_util.h"
 #include "gpu/vulkan_fixture.h"
-#include "runtime/executor/pass_executor.h"
 #include "support/test_support.h"
 
 namespace shadowc::test {
@@ -68,19 +72,21 @@ void main() {
 Manifest twoPassManifest() {
   Manifest m;
   m.filter = "test";
-  m.images = {image("input", ImageFormat::R32F), image("doubled", ImageFormat::R32F), image("result", ImageFormat::R32F)};
+  m.images = {image("input", ImageFormat::R32F), image("doubled", ImageFormat::R32F),
+              image("result", ImageFormat::R32F)};
   m.passes.push_back(pass("double", {{1, "input", Access::StorageRead, -1}, {2, "doubled", Access::StorageWrite, -1}}));
-  Pass add = pass("add", {{0, "frame", Access::Uniform, -1}, {1, "doubled", Access::Sampled, -1}, {2, "result", Access::StorageWrite, -1}});
+  Pass add = pass("add", {{0, "frame", Access::Uniform, -1},
+                          {1, "doubled", Access::Sampled, -1},
+                          {2, "result", Access::StorageWrite, -1}});
   add.pushConstants = {{"offset", 0, ScalarType::F32, 0.25}, {"scale", 4, ScalarType::U32, 3}};
   m.passes.push_back(add);
   return m;
 }
 
-std::filesystem::path twoPassDir() {
-  const auto dir = freshTempDir("executor_two_pass");
-  writeComputeSpirv(dir, "double.spv", kDouble);
-  writeComputeSpirv(dir, "add.spv", kAdd);
-  return dir;
+using SpirvFiles = std::map<std::string, std::string>;  // CompiledPasses::files
+
+SpirvFiles twoPassFiles() {
+  return {{"double.spv", computeSpirv("double.spv", kDouble)}, {"add.spv", computeSpirv("add.spv", kAdd)}};
 }
 
 std::vector<float> ramp() {
@@ -90,8 +96,8 @@ std::vector<float> ramp() {
 }
 
 TEST_F(ExecutorTest, TwoPassesGiveExactValues) {
-  const auto dir = twoPassDir();
-  rt::PassExecutor ex(context(), twoPassManifest(), dir, 64, kW, kH);
+  const SpirvFiles files = twoPassFiles();
+  rt::PassExecutor ex(context(), CompiledPasses{twoPassManifest(), files}, 64, kW, kH);
   ShadowcFrame frame{};
   frame.mapInfo[0] = 1000.0f;
   ex.setFrame(frame);
@@ -101,19 +107,22 @@ TEST_F(ExecutorTest, TwoPassesGiveExactValues) {
   const rt::HostImage doubled = ex.download("doubled");
   const rt::HostImage result = ex.download("result");
   // All values are exact in fp32 (halves of small integers), so the tolerance is 0.
-  EXPECT_TRUE(imageMatches(doubled, [&](uint32_t x, uint32_t y) { return 2.0 * in[y * kW + x]; }, 0.0));
-  EXPECT_TRUE(imageMatches(result, [&](uint32_t x, uint32_t y) { return 3.0 * 2.0 * in[y * kW + x] + 1000.0 + 0.25; }, 0.0));
+  EXPECT_TRUE(imageMatches(
+      doubled, [&](uint32_t x, uint32_t y) { return 2.0 * in[y * kW + x]; }, 0.0));
+  EXPECT_TRUE(imageMatches(
+      result, [&](uint32_t x, uint32_t y) { return 3.0 * 2.0 * in[y * kW + x] + 1000.0 + 0.25; }, 0.0));
 }
 
 // The comparison above can fail: a wrong expectation (3x instead of 2x) is reported.
 TEST_F(ExecutorTest, WrongExpectationIsReported) {
-  const auto dir = twoPassDir();
-  rt::PassExecutor ex(context(), twoPassManifest(), dir, 64, kW, kH);
+  const SpirvFiles files = twoPassFiles();
+  rt::PassExecutor ex(context(), CompiledPasses{twoPassManifest(), files}, 64, kW, kH);
   const auto in = ramp();
   ex.upload("input", rt::HostImage::fromFloats(kW, kH, ImageFormat::R32F, in));
   ex.run();
   const rt::HostImage doubled = ex.download("doubled");
-  const auto verdict = imageMatches(doubled, [&](uint32_t x, uint32_t y) { return 3.0 * in[y * kW + x]; }, 1e-3);
+  const auto verdict = imageMatches(
+      doubled, [&](uint32_t x, uint32_t y) { return 3.0 * in[y * kW + x]; }, 1e-3);
   EXPECT_FALSE(verdict);
   EXPECT_NONFATAL_FAILURE(EXPECT_TRUE(verdict), "should be");
 }
@@ -144,14 +153,13 @@ void main() {
 )";
 
 TEST_F(ExecutorTest, RowsAndColumnsBuildAnIntegerSat) {
-  const auto dir = freshTempDir("executor_sat");
-  writeComputeSpirv(dir, "rows.spv", kRows);
-  writeComputeSpirv(dir, "columns.spv", kColumns);
+  const SpirvFiles files = {{"rows.spv", computeSpirv("rows.spv", kRows)},
+                            {"columns.spv", computeSpirv("columns.spv", kColumns)}};
   Manifest m;
   m.images = {image("sat", ImageFormat::R32UI)};
   m.passes = {pass("rows", {{1, "sat", Access::StorageReadWrite, -1}}, DispatchMode::Rows, {16, 1, 1}),
               pass("columns", {{1, "sat", Access::StorageReadWrite, -1}}, DispatchMode::Columns, {16, 1, 1})};
-  rt::PassExecutor ex(context(), m, dir, 64, kW, kH);
+  rt::PassExecutor ex(context(), CompiledPasses{m, files}, 64, kW, kH);
   std::vector<uint32_t> v(kW * kH);
   for (uint32_t i = 0; i < v.size(); ++i) v[i] = (i * 2654435761u) >> 8;  // large values: sums wrap mod 2^32
   ex.upload("sat", rt::HostImage::fromUints(kW, kH, ImageFormat::R32UI, v));
@@ -191,9 +199,8 @@ void main() {
 )";
 
 TEST_F(ExecutorTest, LayeredMipLevelsAreAddressable) {
-  const auto dir = freshTempDir("executor_layers");
-  writeComputeSpirv(dir, "write.spv", kLayers);
-  writeComputeSpirv(dir, "read.spv", kReadLayers);
+  const SpirvFiles files = {{"write.spv", computeSpirv("write.spv", kLayers)},
+                            {"read.spv", computeSpirv("read.spv", kReadLayers)}};
   Manifest m;
   ImageDesc moments = image("moments", ImageFormat::RG32F, SizeDomain::Map);
   moments.mipLevels = 0;
@@ -207,19 +214,21 @@ TEST_F(ExecutorTest, LayeredMipLevelsAreAddressable) {
   Pass read = pass("read", {{1, "moments", Access::Sampled, -1}, {2, "result", Access::StorageWrite, -1}});
   read.dispatch.size = {SizeDomain::Map, 1};
   m.passes = {write, read};
-  rt::PassExecutor ex(context(), m, dir, 32, kW, kH);
+  rt::PassExecutor ex(context(), CompiledPasses{m, files}, 32, kW, kH);
   ex.run();
   const rt::HostImage l1 = ex.download("moments", 1, 1);
   ASSERT_EQ(l1.width, 16u);
-  EXPECT_TRUE(imageMatches(l1, [](uint32_t x, uint32_t) { return x + 100.0; }, 0.0));
+  EXPECT_TRUE(imageMatches(
+      l1, [](uint32_t x, uint32_t) { return x + 100.0; }, 0.0));
   EXPECT_FLOAT_EQ(l1.texel(3, 5, 1), 5.0f);
   EXPECT_EQ(ex.download("moments", 5, 0).width, 1u) << "full mip chain of a 32^2 image has 6 levels";
-  EXPECT_TRUE(imageMatches(ex.download("result"), [](uint32_t x, uint32_t) { return x + 100.0; }, 0.0));
+  EXPECT_TRUE(imageMatches(
+      ex.download("result"), [](uint32_t x, uint32_t) { return x + 100.0; }, 0.0));
 }
 
 TEST_F(ExecutorTest, TimingReportsEveryPass) {
-  const auto dir = twoPassDir();
-  rt::PassExecutor ex(context(), twoPassManifest(), dir, 64, 256, 256);
+  const SpirvFiles files = twoPassFiles();
+  rt::PassExecutor ex(context(), CompiledPasses{twoPassManifest(), files}, 64, 256, 256);
   ex.upload("input", rt::HostImage::zeros(256, 256, ImageFormat::R32F));
   const rt::TimingResult t = ex.time(2, 5);
   ASSERT_EQ(t.passes.size(), 2u);
@@ -253,9 +262,8 @@ void main() { imageStore(light, ivec2(gl_GlobalInvocationID.xy), vec4(1.0)); }
 )";
 
 TEST_F(ExecutorTest, TimeGoesToThePassThatDidTheWork) {
-  const auto dir = freshTempDir("executor_attribution");
-  writeComputeSpirv(dir, "heavy.spv", kHeavy);
-  writeComputeSpirv(dir, "light.spv", kLight);
+  const SpirvFiles files = {{"heavy.spv", computeSpirv("heavy.spv", kHeavy)},
+                            {"light.spv", computeSpirv("light.spv", kLight)}};
   for (const bool heavyFirst : {true, false}) {
     Manifest m;
     ImageDesc heavyImage = image("heavy", ImageFormat::R32F);
@@ -265,19 +273,20 @@ TEST_F(ExecutorTest, TimeGoesToThePassThatDidTheWork) {
     Pass light = pass("light", {{1, "light", Access::StorageWrite, -1}});
     light.dispatch.size = {SizeDomain::Map, 0};
     m.passes = heavyFirst ? std::vector<Pass>{heavy, light} : std::vector<Pass>{light, heavy};
-    rt::PassExecutor ex(context(), m, dir, 8, 128, 128);
+    rt::PassExecutor ex(context(), CompiledPasses{m, files}, 8, 128, 128);
     const rt::TimingResult t = ex.time(1, 5);
     const double heavyMs = t.passes[heavyFirst ? 0 : 1].medianMs, lightMs = t.passes[heavyFirst ? 1 : 0].medianMs;
-    EXPECT_GT(heavyMs, 0.5 * t.totalMs) << "heavy first: " << heavyFirst << ", heavy " << heavyMs << " ms, light " << lightMs;
+    EXPECT_GT(heavyMs, 0.5 * t.totalMs) << "heavy first: " << heavyFirst << ", heavy " << heavyMs << " ms, light "
+                                        << lightMs;
     EXPECT_GT(heavyMs, 5 * lightMs) << "heavy first: " << heavyFirst;
   }
 }
 
 // --- errors: each one names the pass and says what is wrong ---
 
-std::string errorOf(const Manifest& m, const std::filesystem::path& dir) {
+std::string errorOf(const Manifest& m, const SpirvFiles& files) {
   try {
-    rt::PassExecutor ex(VulkanTest::context(), m, dir, 64, kW, kH);
+    rt::PassExecutor ex(VulkanTest::context(), CompiledPasses{m, files}, 64, kW, kH);
   } catch (const rt::ExecutorError& e) {
     return e.what();
   }
@@ -287,9 +296,9 @@ std::string errorOf(const Manifest& m, const std::filesystem::path& dir) {
 TEST_F(ExecutorTest, ManifestFromAnotherVersionIsRejected) {
   Manifest m = twoPassManifest();
   m.formatVersion = kManifestFormatVersion + 1;
-  EXPECT_NE(errorOf(m, twoPassDir()).find("format version"), std::string::npos);
+  EXPECT_NE(errorOf(m, twoPassFiles()).find("format version"), std::string::npos);
   // The same through manifest.json.
-  const auto dir = twoPassDir();
+  const auto dir = freshTempDir("executor_old_manifest");
   nlohmann::ordered_json j = toJson(twoPassManifest());
   j["format_version"] = kManifestFormatVersion + 1;
   std::ofstream(dir / "manifest.json") << j.dump(2);
@@ -302,9 +311,9 @@ TEST_F(ExecutorTest, ManifestFromAnotherVersionIsRejected) {
 }
 
 TEST_F(ExecutorTest, MissingSpirvNamesThePass) {
-  const auto dir = twoPassDir();
-  std::filesystem::remove(dir / "add.spv");
-  const std::string e = errorOf(twoPassManifest(), dir);
+  SpirvFiles files = twoPassFiles();
+  files.erase("add.spv");
+  const std::string e = errorOf(twoPassManifest(), files);
   EXPECT_NE(e.find("pass 'add'"), std::string::npos) << e;
   EXPECT_NE(e.find("not found"), std::string::npos) << e;
 }
@@ -312,29 +321,30 @@ TEST_F(ExecutorTest, MissingSpirvNamesThePass) {
 TEST_F(ExecutorTest, UnknownImageNamesThePass) {
   Manifest m = twoPassManifest();
   m.passes[1].bindings[1].image = "moments";
-  const std::string e = errorOf(m, twoPassDir());
+  const std::string e = errorOf(m, twoPassFiles());
   EXPECT_NE(e.find("pass 'add'"), std::string::npos) << e;
   EXPECT_NE(e.find("'moments'"), std::string::npos) << e;
 }
 
 TEST_F(ExecutorTest, ShaderManifestMismatchesAreCaught) {
-  const auto dir = twoPassDir();
+  const SpirvFiles files = twoPassFiles();
   Manifest wrongFormat = twoPassManifest();
   wrongFormat.images[1].format = ImageFormat::RG32F;  // the shader says r32f
-  EXPECT_NE(errorOf(wrongFormat, dir).find("shader declares r32f"), std::string::npos) << errorOf(wrongFormat, dir);
+  EXPECT_NE(errorOf(wrongFormat, files).find("shader declares r32f"), std::string::npos) << errorOf(wrongFormat, files);
   Manifest wrongKind = twoPassManifest();
   wrongKind.passes[1].bindings[1].access = Access::StorageRead;  // the shader samples it
-  EXPECT_NE(errorOf(wrongKind, dir).find("combined image sampler in the shader"), std::string::npos) << errorOf(wrongKind, dir);
+  EXPECT_NE(errorOf(wrongKind, files).find("combined image sampler in the shader"), std::string::npos)
+      << errorOf(wrongKind, files);
   Manifest wrongLocal = twoPassManifest();
   wrongLocal.passes[0].localSize = {16, 16, 1};
-  EXPECT_NE(errorOf(wrongLocal, dir).find("local size"), std::string::npos) << errorOf(wrongLocal, dir);
+  EXPECT_NE(errorOf(wrongLocal, files).find("local size"), std::string::npos) << errorOf(wrongLocal, files);
   Manifest unlisted = twoPassManifest();
   unlisted.passes[1].bindings.erase(unlisted.passes[1].bindings.begin());  // frame UBO not listed
-  EXPECT_NE(errorOf(unlisted, dir).find("does not list"), std::string::npos) << errorOf(unlisted, dir);
+  EXPECT_NE(errorOf(unlisted, files).find("does not list"), std::string::npos) << errorOf(unlisted, files);
 }
 
 TEST_F(ExecutorTest, UploadOfTheWrongShapeIsRejected) {
-  rt::PassExecutor ex(context(), twoPassManifest(), twoPassDir(), 64, kW, kH);
+  rt::PassExecutor ex(context(), CompiledPasses{twoPassManifest(), twoPassFiles()}, 64, kW, kH);
   EXPECT_THROW(ex.upload("input", rt::HostImage::zeros(kW + 1, kH, ImageFormat::R32F)), rt::ExecutorError);
   EXPECT_THROW(ex.upload("input", rt::HostImage::zeros(kW, kH, ImageFormat::RG32F)), rt::ExecutorError);
   EXPECT_THROW(ex.upload("nope", rt::HostImage::zeros(kW, kH, ImageFormat::R32F)), rt::ExecutorError);

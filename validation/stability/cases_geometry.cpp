@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "emit/filter_emitter.h"
+#include "driver/driver.h"
 #include "validation/stability/case_support.h"
 
 namespace shadowc::validation {
@@ -126,7 +126,7 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
                    FilterSpec z = s;
                    z.kernel.quadtreeHeight = 0;
                    z.kernel.subdivision = Subdivision::Quadtree;
-                   const FilterEmitResult e = emitFilter(z);
+                   const driver::Result e = driver::compileSpec(z);
                    r.worstError = e.ok ? 1.0 : 0.0;
                    r.detail = e.ok ? "height 0 compiled (expected a rejection)" : "rejected: " + e.log.substr(0, 160);
                    settle(r);

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "spec/load_filter.h"
+#include "driver/driver.h"
 #include "validation/stability/case_support.h"
 
 namespace shadowc::validation {
@@ -44,10 +44,12 @@ CaseResult exponentCase(SuiteContext& ctx, const FilterSpec& s, const ExponentDe
                                       : "fp32 moments at the exponent limit keep ~7 digits";
   std::string rejection;
   if (naive) {
-    const LoadResult checked =
-        loadFilterSource(fmt::format("filter x {{\nmoments evsm4({}, {})\nstorage {}\nmap_size {}\n}}\n",
-                                     std::min(d.ours, 5.0), s.moments.negativeExponent, d.storage, d.map),
-                         "x.shadow");
+    driver::Options check;
+    check.stopAfter = driver::Stage::Check;
+    const driver::Result checked =
+        driver::compileSource(fmt::format("filter x {{\nmoments evsm4({}, {})\nstorage {}\nmap_size {}\n}}\n",
+                                          std::min(d.ours, 5.0), s.moments.negativeExponent, d.storage, d.map),
+                              "x.shadow", check);
     const bool rejected = !checked.spec && std::any_of(checked.diagnostics.begin(), checked.diagnostics.end(),
                                                        [](const Diagnostic& g) { return g.code == "E0404"; });
     rejection = rejected ? "checker rejects it (E0404); " : "CHECKER ACCEPTS IT; ";

@@ -1,31 +1,22 @@
 #include "validation/stability/crafted_run.h"
 
 #include <fmt/format.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <mutex>
 #include <stdexcept>
 
-#include "emit/filter_emitter.h"
-#include "emit/output_writer.h"
-#include "runtime/executor/pass_executor.h"
-#include "spec/load_filter.h"
+#include "driver/driver.h"
+#include "runtime/harness/run_harness.h"
 
 namespace shadowc::validation {
 namespace {
 
-// Compiled filters live in one temp folder per process, removed at exit.
 struct CompileCache {
-  std::filesystem::path root;
   std::map<std::string, std::unique_ptr<CompiledFilter>> filters;
   std::mutex mutex;
-  CompileCache() { root = std::filesystem::temp_directory_path() / fmt::format("shadowc-stability-{}", ::getpid()); }
-  ~CompileCache() {
-    std::error_code ec;
-    std::filesystem::remove_all(root, ec);
-  }
 };
 
 CompileCache& cache() {
@@ -45,10 +36,11 @@ float DepthMap::at(int x, int y) const {
 DepthMap constantMap(uint32_t size, float d) { return {size, std::vector<float>(size_t(size) * size, d)}; }
 
 FilterSpec specFromSource(const std::string& text, const std::string& name) {
-  const LoadResult loaded = loadFilterSource(text, name + ".shadow");
-  if (!loaded.spec)
-    throw std::runtime_error(fmt::format("filter {} does not check:\n{}", name, formatDiagnostics(loaded)));
-  return *loaded.spec;
+  driver::Options options;
+  options.stopAfter = driver::Stage::Check;
+  const driver::Result checked = driver::compileSource(text, name + ".shadow", options);
+  if (!checked.spec) throw std::runtime_error(fmt::format("filter {} does not check:\n{}", name, checked.log));
+  return *checked.spec;
 }
 
 const CompiledFilter& compileCached(const FilterSpec& spec) {
@@ -57,15 +49,12 @@ const CompiledFilter& compileCached(const FilterSpec& spec) {
   const std::string key = specToJson(spec).dump() + (spec.naiveUnguarded ? "|naive" : "");
   auto it = c.filters.find(key);
   if (it != c.filters.end()) return *it->second;
-  const FilterEmitResult emitted = emitFilter(spec, EmitOptions{});
-  if (!emitted.ok) throw std::runtime_error(fmt::format("filter {} does not compile:\n{}", spec.name, emitted.log));
+  const driver::Result compiled = driver::compileSpec(spec);
+  if (!compiled.artifact)
+    throw std::runtime_error(fmt::format("filter {} does not compile:\n{}", spec.name, compiled.log));
   auto cf = std::make_unique<CompiledFilter>();
   cf->spec = spec;
-  cf->manifest = emitted.manifest;
-  cf->dir = c.root / fmt::format("{:03}_{}", c.filters.size(), spec.name);
-  std::filesystem::create_directories(cf->dir);
-  const std::string err = writeFilesAtomically(cf->dir, emitted.files);
-  if (!err.empty()) throw std::runtime_error(err);
+  cf->passes = compiled.artifact->passes();
   return *(c.filters[key] = std::move(cf));
 }
 
@@ -117,17 +106,21 @@ CraftedResult runCrafted(rt::VulkanContext& ctx, const CompiledFilter& filter, c
     }
     pos[i * 4 + 3] = 1.0f;
   }
-  rt::PassExecutor ex(ctx, filter.manifest, filter.dir, map.size, w, h);
-  ex.setFrame(makeFrame(light, map.size, w, h));
-  ex.upload(ex.imageWithRole(ImageRole::InputDepth),
-            rt::HostImage::fromFloats(map.size, map.size, ImageFormat::R32F, map.depth));
-  ex.upload(ex.imageWithRole(ImageRole::InputPosition), rt::HostImage::fromFloats(w, h, ImageFormat::RGBA32F, pos));
-  ex.upload(ex.imageWithRole(ImageRole::InputNormal), rt::HostImage::fromFloats(w, h, ImageFormat::RGBA32F, nrm));
-  ex.run();
+  rt::RunInputs inputs;
+  inputs.frame = makeFrame(light, map.size, w, h);
+  inputs.mapSize = map.size;
+  inputs.width = w;
+  inputs.height = h;
+  inputs.lightDepth = rt::HostImage::fromFloats(map.size, map.size, ImageFormat::R32F, map.depth);
+  inputs.position = rt::HostImage::fromFloats(w, h, ImageFormat::RGBA32F, pos);
+  inputs.normal = rt::HostImage::fromFloats(w, h, ImageFormat::RGBA32F, nrm);
+  rt::RunOptions options;
+  options.downloads = downloads;
+  rt::RunOutputs out = rt::runPasses(ctx, filter.passes, inputs, options);
   CraftedResult result;
-  result.visibility = ex.download(ex.imageWithRole(ImageRole::OutputVisibility)).channel(0);
+  result.visibility = std::move(out.visibility);
   result.visibility.resize(receivers.size());
-  for (const std::string& name : downloads) result.images.emplace(name, ex.download(name));
+  result.images = std::move(out.images);
   return result;
 }
 

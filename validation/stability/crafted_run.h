@@ -1,6 +1,7 @@
-// Crafted GPU runs for the stability suite: a FilterSpec compiled in process (emitFilter), a
-// hand-made shadow map (R32F normalized depth) and hand-placed receivers, every pass run by the
-// PassExecutor, the visibility (and any intermediate image) read back.
+// Crafted GPU runs for the stability suite: a FilterSpec compiled in process (the compiler
+// driver), a hand-made shadow map (R32F normalized depth) and hand-placed receivers, every pass
+// run by the run harness (runtime/harness/run_harness.h), the visibility (and any intermediate
+// image) read back.
 // Receivers are placed exactly: the light view is the identity, so a receiver at shadow-map uv
 // (u, v) and normalized depth d sits at z = near + d (far - near), x = (2u - 1) z tanHalfFov
 // (frame.glsl conventions; the briefing's receiver test z < d - bias).
@@ -8,13 +9,12 @@
 
 #include <array>
 #include <cstdint>
-#include <filesystem>
 #include <map>
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
+#include "manifest/compiled_passes.h"
 #include "manifest/frame_uniforms.h"
 #include "manifest/manifest.h"
 #include "runtime/executor/host_image.h"
@@ -28,8 +28,7 @@ namespace shadowc::validation {
 
 struct CompiledFilter {
   FilterSpec spec;
-  Manifest manifest;
-  std::filesystem::path dir;  // manifest.json and *.spv, kept for the life of the process
+  CompiledPasses passes;  // the manifest and its SPIR-V, in memory
 };
 
 // Compiles once per distinct spec per process (the spec JSON plus the debug flags is the key).

@@ -1,5 +1,5 @@
 // Randomized filters: valid descriptions within docs/dsl.md's ranges, generated as DSL text from
-// (seed, index), compiled in process (spirv-val runs inside emitFilter) and run on a random map
+// (seed, index), compiled in process (the driver; spirv-val runs inside) and run on a random map
 // with random receivers: never a checker error, invalid SPIR-V, NaN, Inf or a value outside [0, 1].
 #include <fmt/format.h>
 

@@ -1,0 +1,131 @@
+// The compiler driver (driver.h): load -> check -> plan -> emit -> backend, in this file only.
+#include "driver/driver.h"
+
+#include <algorithm>
+#include <exception>
+#include <utility>
+
+#include "emit/filter_emitter.h"
+#include "emit/output_writer.h"
+#include "plan/planner.h"
+
+namespace shadowc::driver {
+namespace {
+
+// A stage that throws (a precondition the checker does not own yet) becomes one located line
+// in glslc form, never an exception out of the driver.
+std::string locatedError(const FilterSpec& spec, const std::string& message) {
+  return spec.location.file + ":" + std::to_string(spec.location.line) + ":" + std::to_string(spec.location.column) +
+         ": error: " + message + "\n";
+}
+
+// A spec built in code re-enters the pipeline here. The checker's spec validation (spec
+// printer + check, engineer B) replaces the body: `return loadFilterSource(printSpec(spec), ...)`.
+LoadResult checkBuiltSpec(const FilterSpec& spec) {
+  LoadResult checked;
+  checked.spec = spec;
+  return checked;
+}
+
+// Plan, then emit and run the backend: the one place the planner's output meets the emitter.
+// (The emitter still plans internally; it takes `plan` once it renders the PassGraph.)
+FilterEmitResult emitStage(const FilterSpec& spec, const PassGraph& /*plan*/, const Options& options) {
+  EmitOptions eo;
+  eo.optimize = options.optimize;
+  eo.warningsAsErrors = options.warningsAsErrors;
+  return emitFilter(spec, eo);
+}
+
+// Everything after the front end, shared by the three entry points.
+Result finish(const LoadResult& loaded, const Options& options) {
+  Result r;
+  r.diagnostics = loaded.diagnostics;
+  r.log = formatDiagnostics(loaded);
+  if (!loaded.spec) return r;
+  const FilterSpec& spec = *loaded.spec;
+  r.spec = spec;
+  if (options.stopAfter == Stage::Check) {
+    r.ok = true;
+    return r;
+  }
+  try {
+    r.plan = planPasses(spec);
+  } catch (const std::exception& e) {
+    r.log += locatedError(spec, e.what());
+    return r;
+  }
+  if (options.stopAfter == Stage::Plan) {
+    r.ok = true;
+    return r;
+  }
+  FilterEmitResult emitted;
+  try {
+    emitted = emitStage(spec, *r.plan, options);
+  } catch (const std::exception& e) {
+    r.log += locatedError(spec, e.what());
+    return r;
+  }
+  r.log += emitted.log;
+  if (!emitted.ok) return r;
+  r.artifact = Artifact{spec, *r.plan, std::move(emitted.manifest), std::move(emitted.files)};
+  r.ok = true;
+  return r;
+}
+
+LoadOptions loadOptions(const Options& options) {
+  LoadOptions lo;
+  lo.warningsAsErrors = options.warningsAsErrors;
+  return lo;
+}
+
+}  // namespace
+
+const std::string* Artifact::file(const std::string& name) const {
+  const auto it = std::lower_bound(files.begin(), files.end(), name,
+                                   [](const EmittedFile& f, const std::string& n) { return f.name < n; });
+  return it != files.end() && it->name == name ? &it->bytes : nullptr;
+}
+
+CompiledPasses Artifact::passes() const {
+  CompiledPasses c;
+  c.manifest = manifest;
+  for (const Pass& p : manifest.passes)
+    if (const std::string* bytes = file(p.spirv)) c.files.emplace(p.spirv, *bytes);
+  return c;
+}
+
+OutputKind outputKindOf(const std::string& fileName) {
+  if (fileName == kManifestFile) return OutputKind::Manifest;
+  if (fileName.ends_with(".spv")) return OutputKind::Spirv;
+  return OutputKind::Glsl;
+}
+
+Result compileSource(const std::string& text, const std::string& fileName, const Options& options) {
+  return finish(loadFilterSource(text, fileName, loadOptions(options)), options);
+}
+
+Result compileFile(const std::string& path, const Options& options) {
+  return finish(loadFilterFile(path, loadOptions(options)), options);
+}
+
+Result compileSpec(const FilterSpec& spec, const Options& options) { return finish(checkBuiltSpec(spec), options); }
+
+std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec& spec) {
+  std::set<std::string> names{kManifestFile, lookupFileName(spec.name)};
+  for (const Pass& p : plan.manifest.passes) {
+    names.insert(p.glsl);
+    names.insert(p.spirv);
+  }
+  return {names.begin(), names.end()};
+}
+
+std::string writeArtifact(const std::filesystem::path& dir, const Artifact& artifact, const std::set<OutputKind>& kinds,
+                          const std::vector<EmittedFile>& extra) {
+  std::vector<EmittedFile> files;
+  for (const EmittedFile& f : artifact.files)
+    if (kinds.empty() || kinds.count(outputKindOf(f.name))) files.push_back(f);
+  files.insert(files.end(), extra.begin(), extra.end());
+  return writeFilesAtomically(dir, files);
+}
+
+}  // namespace shadowc::driver

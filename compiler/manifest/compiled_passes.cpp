@@ -1,0 +1,25 @@
+#include "manifest/compiled_passes.h"
+
+#include <fstream>
+#include <iterator>
+#include <stdexcept>
+
+namespace shadowc {
+
+CompiledPasses CompiledPasses::fromDirectory(const std::filesystem::path& dirOrManifest) {
+  std::filesystem::path file = dirOrManifest;
+  if (std::filesystem::is_directory(file)) file /= "manifest.json";
+  const std::filesystem::path dir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
+  CompiledPasses c;
+  c.manifest = loadManifest(file.string());
+  for (const Pass& pass : c.manifest.passes) {
+    if (c.files.count(pass.spirv)) continue;  // passes that share a shader (mip1..mipK)
+    std::ifstream in(dir / pass.spirv, std::ios::binary);
+    if (!in)
+      throw std::runtime_error("pass '" + pass.name + "': SPIR-V file '" + (dir / pass.spirv).string() + "' not found");
+    c.files.emplace(pass.spirv, std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+  }
+  return c;
+}
+
+}  // namespace shadowc

@@ -1,0 +1,58 @@
+#include "runtime/harness/scene_run.h"
+
+#include <algorithm>
+#include <stdexcept>
+#include <utility>
+
+#include "runtime/reference/embree_reference.h"
+
+namespace shadowc::rt {
+
+std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, const SceneSettings& settings,
+                                                  const ReferenceProgressFn& progress) {
+  return prepareScene(ctx, loadScene(settings.scene), settings, progress);
+}
+
+std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scene, const SceneSettings& settings,
+                                                  const ReferenceProgressFn& progress) {
+  if (settings.screen == 0 || settings.map == 0 || settings.referenceSamples < 1)
+    throw std::invalid_argument("screen and map sizes and reference samples must be positive");
+  auto p = std::make_shared<PreparedScene>();
+  p->settings = settings;
+  p->scene = std::move(scene);
+  p->setup = setupFrame(p->scene, settings.map, settings.screen, settings.screen);
+  p->raster = rasterize(ctx, p->scene, p->setup);
+  const std::vector<float> positions = p->raster.gbufferPosition.floats();
+  ProgressFn onProgress;
+  if (progress)
+    onProgress = [&progress](const ReferenceProgress& r) {
+      progress(double(r.pixelsDone) / double(std::max<uint64_t>(1, r.pixelsTotal)), r.seconds, r.raysPerSecond);
+    };
+  // The on-disk cache is keyed by content (scene hash, G-buffer bytes, samples): embree_reference.h.
+  ReferenceResult reference =
+      traceReference(p->scene, positions, p->raster.gbufferNormal.floats(), settings.screen, settings.screen,
+                     settings.referenceSamples, settings.referenceCache, onProgress, settings.useCache);
+  p->reference = std::move(reference.visibility);
+  p->referenceFromCache = reference.fromCache;
+  p->referenceCacheWarning = reference.cacheWarning;
+  p->mask = geometryMask(positions);
+  return p;
+}
+
+SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, const PreparedScene& scene,
+                          const RunOptions& options) {
+  RunInputs inputs;
+  inputs.frame = scene.setup.frame;
+  inputs.mapSize = scene.setup.mapSize;
+  inputs.width = scene.setup.width;
+  inputs.height = scene.setup.height;
+  inputs.lightDepth = scene.raster.lightDepth;
+  inputs.position = scene.raster.gbufferPosition;
+  inputs.normal = scene.raster.gbufferNormal;
+  SceneRunResult r;
+  r.outputs = runPasses(ctx, passes, inputs, options);
+  r.metrics = computeMetrics(r.outputs.visibility, scene.reference, scene.mask);
+  return r;
+}
+
+}  // namespace shadowc::rt
