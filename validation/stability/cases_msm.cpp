@@ -51,8 +51,8 @@ void addMsmCases(std::vector<StabilityCase>& out) {
       [](SuiteContext& ctx, const FilterSpec& s) {
         return evaluate(ctx,
                         bounded(5e-3,
-                                "rank-1 Hankel matrix: only the bias keeps D33 ~ alpha^2 > 0, and fp32 rounding of "
-                                "b4 - b2^2 - L32^2 D22 is ~1e-8; measured 2.7e-3"),
+                                "rank-1 Hankel matrix: only the bias keeps D22, D33 ~ alpha > 0, so fp32 rounding "
+                                "(~1e-8) of b4 - b2^2 - L32^2 D22 moves the bound by ~1e-8 / alpha; measured 2.7e-3"),
                         s, constantMap(kMap, 0.4f),
                         gridReceivers({0.2, 0.4, 0.4 + s.bias.constant, 0.405, 0.41, 0.6, 0.95}), LightFrame{});
       }));
