@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "driver/driver.h"
 #include "emit/depfile.h"
+#include "plan/plan_printer.h"
 
 namespace shadowc::cli {
 namespace {
@@ -22,6 +23,7 @@ struct CompileArgs {
   std::string outputDir;
   std::string emit = "glsl,spirv,manifest";
   bool printSpec = false;
+  bool printPlan = false;
   bool printRecipe = false;
   bool optimize = true;
   bool depsToStdout = false;  // -M
@@ -72,12 +74,13 @@ int run(CompileArgs& a, CLI::App& sub) {
     if (kinds.empty()) return error("--emit: no kind given (expected a subset of glsl,spirv,manifest)");
   }
 
-  // Stop as early as the request allows: --print-spec alone needs the checker, -M the plan.
+  // Stop as early as the request allows: --print-spec alone needs the checker, -M and
+  // --print-plan the plan.
   driver::Options options;
   options.optimize = a.optimize;
   options.warningsAsErrors = a.werror;
   if (a.outputDir.empty())
-    options.stopAfter = driver::Stage::Check;
+    options.stopAfter = a.printPlan ? driver::Stage::Plan : driver::Stage::Check;
   else if (a.depsToStdout)
     options.stopAfter = driver::Stage::Plan;
   const driver::Result r = driver::compileFile(a.input, options);
@@ -90,15 +93,20 @@ int run(CompileArgs& a, CLI::App& sub) {
 
   if (a.printSpec) {
     fmt::print("{}\n", specToJson(spec).dump(2));
-    if (a.outputDir.empty()) return 0;
+    if (a.outputDir.empty() && !a.printPlan) return 0;
   }
-  if (a.outputDir.empty()) return error("no output directory (use -o DIR)");
-  const std::filesystem::path dir(a.outputDir);
   auto didNotCompile = [&] {
     std::fflush(stdout);
     fmt::print(stderr, "shadowc: error: filter '{}' did not compile; nothing was written\n", spec.name);
     return 1;
   };
+  if (a.printPlan) {
+    if (!r.plan) return a.outputDir.empty() ? 1 : didNotCompile();
+    fmt::print("{}", printPassGraph(*r.plan));
+    if (a.outputDir.empty()) return 0;
+  }
+  if (a.outputDir.empty()) return error("no output directory (use -o DIR)");
+  const std::filesystem::path dir(a.outputDir);
   if (!r.plan) return didNotCompile();
 
   std::vector<std::string> outputs;
@@ -124,6 +132,8 @@ CommandRunner registerCompile(CLI::App& app) {
   sub->add_option("-o,--output", args->outputDir, "output directory (created; files replaced atomically)");
   sub->add_option("--emit", args->emit, "comma-separated subset of glsl,spirv,manifest (default: all)");
   sub->add_flag("--print-spec", args->printSpec, "print the normalized FilterSpec as JSON and stop (unless -o)");
+  sub->add_flag("--print-plan", args->printPlan,
+                "print the pass graph (images, passes, every specialization value) and stop (unless -o)");
   sub->add_flag("--print-recipe", args->printRecipe, "print the -O spirv-opt recipe, one pass per line");
   sub->footer(
       "glslc-style flags:\n"

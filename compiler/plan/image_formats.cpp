@@ -55,6 +55,4 @@ bool msmQuantized(const FilterSpec& spec) {
          (spec.storage.sat == SatKind::None && spec.storage.format != StorageFormat::Fp32);
 }
 
-const char* glslQualifier(ImageFormat f) { return toString(f); }  // manifest names are the GLSL names
-
 }  // namespace shadowc

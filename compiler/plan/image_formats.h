@@ -1,4 +1,5 @@
-// The one place that maps storage choices to image formats and GLSL format qualifiers.
+// The one place that maps storage choices to image formats (the emitter renders a format as
+// its GLSL layout qualifier: emit/glsl_literal.h).
 #pragma once
 
 #include "manifest/manifest.h"
@@ -20,8 +21,5 @@ ImageFormat satFormat(const FilterSpec& spec);
 // moments (Peters & Klein 2015), i.e. the storage keeps 16 bits (unorm16, an int32 16.16 SAT).
 // The moments pass encodes and the lookup decodes with the same flag (SHADOWC_MSM_QUANTIZED).
 bool msmQuantized(const FilterSpec& spec);
-
-// The GLSL layout qualifier of a format ("rg32f", "rgba16", "rg32ui").
-const char* glslQualifier(ImageFormat f);
 
 }  // namespace shadowc

@@ -229,25 +229,25 @@ vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
 }
 #line 36
 float shadowc_estimate(vec4 m, float d, float minVariance){
-#line 44
+#line 47
   return shadowc_reduceBleeding(shadowc_msm(m, d));
-#line 48
+#line 51
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 56
+#line 59
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 70
+#line 73
   return v;
 }
-#line 75
+#line 78
 float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 85
+#line 88
   float w = 1.0;
 
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
@@ -267,13 +267,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 80
+#line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 91
+#line 94
   float v = shadowc_momentsTechnique(r);
-#line 101
+#line 104
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

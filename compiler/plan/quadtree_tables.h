@@ -14,20 +14,18 @@
 #pragma once
 
 #include <functional>
-#include <string>
-#include <string_view>
 #include <vector>
 
 namespace shadowc {
 
 struct QuadtreeNode {
-  int level = 0;          // 0 = root
-  int ix = 0, iy = 0;     // cell index within the 2^level x 2^level grid of that level
-  double offsetX = 0.0;   // sub-kernel rectangle, in units of the root kernel
+  int level = 0;         // 0 = root
+  int ix = 0, iy = 0;    // cell index within the 2^level x 2^level grid of that level
+  double offsetX = 0.0;  // sub-kernel rectangle, in units of the root kernel
   double offsetY = 0.0;
-  double size = 1.0;      // 2^-level
-  int child = -1;         // first child, -1 for a leaf
-  int next = -1;          // -1 = Null
+  double size = 1.0;  // 2^-level
+  int child = -1;     // first child, -1 for a leaf
+  int next = -1;      // -1 = Null
 };
 
 struct QuadtreeTables {
@@ -48,16 +46,5 @@ QuadtreeTables buildQuadtreeTables(int height);
 // The walk stops after nodes.size() steps even if the tables are broken (as the GLSL loop does).
 std::vector<int> walkQuadtreeTables(const QuadtreeTables& tables, const std::function<bool(int)>& descend,
                                     int maxLevel = -1);
-
-// GLSL const arrays: `const ivec3 <prefix>Node[N]` (ix, iy, 2^level), `const int <prefix>Child[N]`,
-// `const int <prefix>Next[N]`, and `#define <PREFIX>_NODES N` is left to the caller.
-std::string emitQuadtreeTablesGlsl(const QuadtreeTables& tables, std::string_view prefix);
-
-// Straight-line GLSL equivalent to the table walk (no loop, no table): a function
-//   void <functionName>() { if (<visitFn>(ivec3(0, 0, 1))) { ... } }
-// where `bool visitFn(ivec3 node)` classifies an internal node (true = descend) and
-// `void leafFn(ivec3 node)` resolves a leaf completely. Nodes are ivec3(ix, iy, 2^level).
-std::string emitUnrolledQuadtreeGlsl(int height, std::string_view functionName, std::string_view visitFn,
-                                     std::string_view leafFn);
 
 }  // namespace shadowc

@@ -1,5 +1,5 @@
 // Best-candidate Poisson disk (see poisson_disk.h).
-#include "emit/poisson_disk.h"
+#include "plan/poisson_disk.h"
 
 #include <algorithm>
 #include <cmath>
