@@ -21,6 +21,8 @@ int momentChannels(Warp warp) {
       return 4;
     case Warp::PowerCdf:
       return 4;
+    case Warp::Msm:
+      return 4;
   }
   return 4;
 }
@@ -45,6 +47,12 @@ ImageFormat satFormat(const FilterSpec& spec) {
   if (spec.storage.sat == SatKind::Int32)
     return bySize(c, ImageFormat::R32UI, ImageFormat::RG32UI, ImageFormat::RGBA32UI);
   return bySize(c, ImageFormat::R32F, ImageFormat::RG32F, ImageFormat::RGBA32F);
+}
+
+bool msmQuantized(const FilterSpec& spec) {
+  if (spec.representation != Representation::Moments || spec.moments.warp != Warp::Msm) return false;
+  return spec.storage.sat == SatKind::Int32 ||
+         (spec.storage.sat == SatKind::None && spec.storage.format != StorageFormat::Fp32);
 }
 
 }  // namespace shadowc

@@ -17,5 +17,9 @@ ImageFormat momentsFormat(const FilterSpec& spec);
 
 // `sat` format: int32 -> r/rg/rgba32ui, fp32 kinds -> r/rg/rgba32f.
 ImageFormat satFormat(const FilterSpec& spec);
+// Moment shadow maps: whether the stored moments are the sec. 4.3 quantization of the power
+// moments (Peters & Klein 2015), i.e. the storage keeps 16 bits (unorm16, an int32 16.16 SAT).
+// The moments pass encodes and the lookup decodes with the same flag (SHADOWC_MSM_QUANTIZED).
+bool msmQuantized(const FilterSpec& spec);
 
 }  // namespace shadowc

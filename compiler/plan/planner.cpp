@@ -62,6 +62,8 @@ class Planner {
     v.add("SHADOWC_EXP_NEGATIVE", fp32(spec_.moments.negativeExponent));
     v.add("SHADOWC_LAYERS", static_cast<long long>(spec_.moments.layers));
     v.add("SHADOWC_MOMENTS_FORMAT", momentsFormat(spec_));
+    // Moment shadow maps: the sec. 4.3 quantization for 16-bit storage (image_formats.h).
+    if (spec_.moments.warp == Warp::Msm) v.add("SHADOWC_MSM_QUANTIZED", msmQuantized(spec_));
     return v;
   }
 

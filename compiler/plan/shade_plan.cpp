@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <stdexcept>
 
+#include "plan/image_formats.h"
 #include "plan/planner.h"
 #include "plan/poisson_disk.h"
 #include "plan/quadtree_tables.h"
@@ -106,6 +107,10 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
     defInt("SHADOWC_LAYERS", layers);
     defReal("SHADOWC_OVERLAP", std::max(0.0, s.moments.overlap));
     defBool("SHADOWC_LAYER_BLEND", layers > 1 && s.moments.overlap > 0.0);
+    if (s.moments.warp == Warp::Msm) {  // Peters & Klein 2015: sec. 4.3 decoding, Algorithm 3's alpha
+      defBool("SHADOWC_MSM_QUANTIZED", msmQuantized(s));
+      defReal("SHADOWC_MSM_BIAS", s.moments.momentBias);
+    }
     if (layers > 1 && !splitsTexture)
       out.tables.push_back(
           RealTable{"shadowc_splitTable", "Layer split depths s_0..s_N (lauritzen2008 sec. 3.4)", s.moments.splits});

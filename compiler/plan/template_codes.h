@@ -41,6 +41,8 @@ constexpr EnumCode warpCode(Warp w) {  // SHADOWC_WARP
       return {"SHADOWC_WARP_EVSM4", 3};
     case Warp::PowerCdf:
       return {"SHADOWC_WARP_POWER_CDF", 4};
+    case Warp::Msm:
+      return {"SHADOWC_WARP_MSM", 5};
   }
   return {"SHADOWC_WARP_LINEAR", 0};
 }

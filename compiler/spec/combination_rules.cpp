@@ -52,6 +52,10 @@ struct Facts {
   bool explicitSplits() const { return moments && s.moments.split == SplitPlacement::Explicit && r.explicitOk; }
   bool splitCountOk() const { return static_cast<int>(r.explicitSplits.size()) == s.moments.layers + 1; }
   bool vssm() const { return moments && s.blocker.kind == BlockerKind::Moments; }
+  bool msm() const { return moments && s.moments.warp == Warp::Msm; }
+  bool msmFp32Sat() const {
+    return msm() && (s.storage.sat == SatKind::Fp32Centered || s.storage.sat == SatKind::Fp32Naive);
+  }
 };
 
 // The token a rule's caret points at. Settings point at their value (the keyword when it has
@@ -73,6 +77,7 @@ enum class Caret {
   Exponent,
   NegativeExponent,
   MinVariance,
+  MomentBias,
   Split,
   BadSplitBoundary,  // the first explicit split boundary out of order
 };
@@ -98,6 +103,8 @@ const char* warpName(Warp w) {
       return "evsm4";
     case Warp::PowerCdf:
       return "power_cdf";
+    case Warp::Msm:
+      return "msm";
   }
   return "linear";
 }
@@ -168,6 +175,17 @@ const Rule kRules[] = {
     {DiagId::vssmNeedsOneLayer, Caret::LayersElseRepresentation,
      [](const Facts& f) { return f.vssm() && f.s.moments.layers > 1; },
      [](const Facts& f, Args& a) { push(a, f.s.moments.layers); }},
+    // ---- moment shadow maps: what four moments need from the storage (Peters & Klein 2015) ------
+    {DiagId::msmLayers, Caret::LayersElseRepresentation,
+     [](const Facts& f) { return f.msm() && f.s.moments.layers > 1; },
+     [](const Facts& f, Args& a) { push(a, f.s.moments.layers); }},
+    {DiagId::msmFp16, Caret::Storage, [](const Facts& f) { return f.msm() && !f.sat && f.fp16; }},
+    {DiagId::msmSatPrecision, Caret::Storage,
+     [](const Facts& f) { return f.msmFp32Sat() && msmFp32SatPrecision(f.s).meanError > f.s.moments.momentBias; },
+     [](const Facts& f, Args& a) {
+       const MsmSatPrecision p = msmFp32SatPrecision(f.s);
+       push(a, f.s.mapSize, p.boxTexels, p.meanError, f.s.moments.momentBias);
+     }},
     // ---- exponential warps: exp(c) must stay representable (precision.h) -----------------------
     {DiagId::exponentOverflow, Caret::Exponent,
      [](const Facts& f) { return f.exponential && f.r.exponent && f.s.moments.positiveExponent > f.limit.maxExponent; },
@@ -230,10 +248,13 @@ const Rule kRules[] = {
      [](const Facts& f) { return f.moments && f.s.moments.bleedingReduction >= 0.5; },
      [](const Facts& f, Args& a) { push(a, f.s.moments.bleedingReduction); }},
     {DiagId::noEffect, Caret::Bleeding,
-     [](const Facts& f) { return f.moments && !f.chebyshev && f.s.moments.bleedingReduction > 0; },
-     [](const Facts&, Args& a) { push(a, "bleeding", "only Chebyshev warps (linear, evsm2, evsm4) bleed"); }},
+     [](const Facts& f) { return f.moments && !f.chebyshev && !f.msm() && f.s.moments.bleedingReduction > 0; },
+     [](const Facts&, Args& a) { push(a, "bleeding", "only Chebyshev warps (linear, evsm2, evsm4) and msm bleed"); }},
     {DiagId::zeroMinVariance, Caret::MinVariance,
      [](const Facts& f) { return f.moments && f.chebyshev && f.r.minVariance && f.s.moments.minVariance == 0; }},
+    {DiagId::msmSmallBias, Caret::MomentBias,
+     [](const Facts& f) { return f.msm() && f.r.momentBias && f.s.moments.momentBias < msmDefaultBias(f.s.storage); },
+     [](const Facts& f, Args& a) { push(a, f.s.moments.momentBias, msmDefaultBias(f.s.storage)); }},
     {DiagId::fp16LargeLight, Caret::Light,
      [](const Facts& f) { return f.moments && f.fp16 && !f.sat && f.r.lightSizeGiven && f.s.light.size > 0.1; },
      [](const Facts& f, Args& a) { push(a, f.s.light.size); }},
@@ -293,6 +314,8 @@ Span caretOf(Caret c, const Facts& f, const dsl::FilterDecl& filter) {
       return valueSpan(*r.negativeExponent);
     case Caret::MinVariance:
       return valueSpan(*r.minVariance);
+    case Caret::MomentBias:
+      return valueSpan(*r.momentBias);
     case Caret::Split:
       return valueSpan(*r.split);
     case Caret::BadSplitBoundary:

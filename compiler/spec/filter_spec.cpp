@@ -32,6 +32,8 @@ const char* name(Warp v) {
       return "evsm4";
     case Warp::PowerCdf:
       return "power_cdf";
+    case Warp::Msm:
+      return "msm";
   }
   return "?";
 }
@@ -148,6 +150,8 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
                    {"min_variance", m.minVariance},
                    {"bleeding_reduction", m.bleedingReduction},
                    {"lloyd_iterations", m.lloydIterations}};
+  // Only msm has a moment bias; other warps' manifests stay byte-identical.
+  if (m.warp == Warp::Msm) j["moments"]["moment_bias"] = m.momentBias;
   j["storage"] = J{{"format", name(s.storage.format)}, {"sat", name(s.storage.sat)}};
   j["prefilter"] =
       J{{"blur", name(s.prefilter.blur)}, {"blur_radius", s.prefilter.blurRadius}, {"mips", s.prefilter.mips}};

@@ -36,6 +36,7 @@ enum class Warp {
   Evsm2,     // (exp(c+ z), exp(c+ z)^2): positive EVSM
   Evsm4,     // (exp(c+ z), exp(c+ z)^2, -exp(-c- z), exp(-c- z)^2)
   PowerCdf,  // (min, max, mean): power-CDF shadow maps
+  Msm,       // (z, z^2, z^3, z^4): Hamburger 4MSM (Peters & Klein 2015, Algorithm 3)
 };
 enum class SplitPlacement { Uniform, Explicit, Lloyd };
 struct MomentsSpec {
@@ -49,6 +50,7 @@ struct MomentsSpec {
   double minVariance = 1e-5;       // VSM minimum variance (per layer when layered)
   double bleedingReduction = 0.0;  // 0 = off; else Lauritzen's linstep(amount, 1, p)
   int lloydIterations = 8;         // for SplitPlacement::Lloyd (needs scene histogram)
+  double momentBias = 3e-5;       // Msm: alpha of b' = (1 - alpha) b + alpha b* (Algorithm 3)
 };
 
 // ---- storage -----------------------------------------------------------------------------

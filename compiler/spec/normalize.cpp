@@ -44,6 +44,9 @@ void normalize(FilterSpec& spec, const SettingsRead& given) {
   // fp16 moments need a larger variance floor (vsm-tutorial: variance = max(variance, 0.0005)).
   if (!given.minVariance && moments && spec.storage.format == StorageFormat::Fp16 && spec.storage.sat == SatKind::None)
     m.minVariance = 5e-4;
+  // Moment bias: the paper's 3e-5 for 16-bit storage (unorm16 or the 16.16 int32 SAT, both
+  // quantized by sec. 4.3); fp32 needs less, 3e-6 (precision.h, docs/techniques.md).
+  if (!given.momentBias && moments && m.warp == Warp::Msm) m.momentBias = msmDefaultBias(spec.storage);
   // Splits: layers+1 boundaries in [0,1]. Lloyd starts uniform; the planner refines them with
   // the scene's depth histogram (lauritzen2008 sec. 4.1).
   if (m.split == SplitPlacement::Explicit && given.explicitOk) {

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cmath>
 
 namespace shadowc::spec {
@@ -39,6 +40,21 @@ ExponentLimit warpExponentLimit(const StorageSpec& storage, int mapSize) {
       break;
   }
   return {kFp32, "exp(2c) must stay finite in fp32 (ln(FLT_MAX)/2 = 44.4; 42 keeps headroom)", "fp32"};
+}
+
+double msmDefaultBias(const StorageSpec& storage) {
+  const bool sixteenBits =
+      storage.sat == SatKind::Int32 || (storage.sat == SatKind::None && storage.format != StorageFormat::Fp32);
+  return sixteenBits ? 3e-5 : 3e-6;
+}
+
+MsmSatPrecision msmFp32SatPrecision(const FilterSpec& spec) {
+  const double w = static_cast<double>(spec.mapSize);
+  const long long half = spec.kernel.size == KernelSize::Fixed ? (spec.kernel.fixedTexels + 1) / 2 : 1;
+  MsmSatPrecision p;
+  p.boxTexels = std::max(1LL, half * half);
+  p.meanError = 2.0 * std::ldexp(1.0, -24) * w * w * w / static_cast<double>(p.boxTexels);
+  return p;
 }
 
 }  // namespace shadowc::spec

@@ -23,4 +23,20 @@ ExponentLimit warpExponentLimit(const StorageSpec& storage, int mapSize);
 // (modular arithmetic makes every such box sum exact; FACTS.md), i.e. k <= 65535 texels.
 inline constexpr int kInt32SatMaxBoxTexels = 65535;
 
+// Moment shadow maps (Peters & Klein 2015). The moment bias alpha must cover the rounding of the
+// stored moments: 3e-5 for 16-bit storage (unorm16, the 16.16 int32 SAT), the paper's value with
+// the sec. 4.3 quantization; 3e-6 for fp32, the smallest for which fp32 evaluation of Algorithm 3
+// keeps a single-depth receiver 1e-3 in front of its occluder lit (docs/techniques.md).
+double msmDefaultBias(const StorageSpec& storage);
+
+// Worst-case error of a box mean read from an fp32 SAT of moments (values in [0,1], centered or
+// not): each entry is W row adds then W column adds of partial sums up to W^2 / 2, each rounding
+// by 2^-24 of the sum, so |error| <= u W^3 / 2 per entry and 2 u W^3 over the four corners; the
+// mean divides by the smallest box the kernel can read (a fixed kernel clipped at a map corner).
+struct MsmSatPrecision {
+  double meanError = 0;
+  long long boxTexels = 1;
+};
+MsmSatPrecision msmFp32SatPrecision(const FilterSpec& spec);
+
 }  // namespace shadowc::spec

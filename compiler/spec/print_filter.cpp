@@ -62,11 +62,16 @@ std::string moments(const MomentsSpec& m) {
     case Warp::PowerCdf:
       warp = "power_cdf";
       break;
+    case Warp::Msm:
+      warp = "msm";
+      break;
   }
   if (m.warp == Warp::Exp || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4)
     args.push_back("exponent: " + num(m.positiveExponent));
   if (m.warp == Warp::Evsm4) args.push_back("negative_exponent: " + num(m.negativeExponent));
-  if (m.warp != Warp::Exp && m.warp != Warp::PowerCdf) args.push_back("min_variance: " + num(m.minVariance));
+  if (m.warp == Warp::Msm) args.push_back("moment_bias: " + num(m.momentBias));
+  if (m.warp != Warp::Exp && m.warp != Warp::PowerCdf && m.warp != Warp::Msm)
+    args.push_back("min_variance: " + num(m.minVariance));
   args.push_back(fmt::format("layers: {}", m.layers));
   args.push_back("split: " + split(m));
   args.push_back("overlap: " + num(m.overlap));

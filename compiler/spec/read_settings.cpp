@@ -296,16 +296,18 @@ class SettingsReader {
   }
 
   void readMoments(const Value& v, const std::string& what) {
-    auto idx = variant(v, what, {"linear", "exp", "evsm2", "evsm4", "power_cdf"});
+    auto idx = variant(v, what, {"linear", "exp", "evsm2", "evsm4", "power_cdf", "msm"});
     if (!idx) return;
     out_.spec.representation = Representation::Moments;
-    const Warp warps[] = {Warp::Linear, Warp::Exp, Warp::Evsm2, Warp::Evsm4, Warp::PowerCdf};
+    const Warp warps[] = {Warp::Linear, Warp::Exp, Warp::Evsm2, Warp::Evsm4, Warp::PowerCdf, Warp::Msm};
     MomentsSpec& m = out_.spec.moments;
     m.warp = warps[*idx];
     std::vector<Param> params;
     if (m.warp == Warp::Exp || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4) params.push_back({"exponent", true});
     if (m.warp == Warp::Evsm4) params.push_back({"negative_exponent", true});
-    if (m.warp != Warp::Exp && m.warp != Warp::PowerCdf) params.push_back({"min_variance", false});
+    if (m.warp == Warp::Msm) params.push_back({"moment_bias", true});  // msm has a bias, not a variance floor
+    if (m.warp != Warp::Exp && m.warp != Warp::PowerCdf && m.warp != Warp::Msm)
+      params.push_back({"min_variance", false});
     for (std::string_view p : {"layers", "split", "overlap"}) params.push_back({p, false});
     Bound b;
     bind(v, params, b);
@@ -327,6 +329,10 @@ class SettingsReader {
     }
     if (const Value* x = get(b, "min_variance")) {
       if (auto n = number(x, arg("min_variance", v), Range{0, 1})) m.minVariance = *n, out_.minVariance = x;
+    }
+    if (const Value* x = get(b, "moment_bias")) {
+      // 0 would leave the Hankel matrix of a single depth singular (Algorithm 3 divides by it).
+      if (auto n = number(x, arg("moment_bias", v), Range{0, 0.01, true})) m.momentBias = *n, out_.momentBias = x;
     }
     if (const Value* x = get(b, "split")) readSplit(*x, arg("split", v));
   }

@@ -183,4 +183,89 @@ double vsmStackedPlanesBleeding(double a, double b, double c) {
   return (0.25 * dx * dx) / (0.5 * dx * dx + dx * dy + dy * dy);
 }
 
+// ---- Moment shadow mapping (Peters & Klein 2015) -------------------------------------------
+
+// The moments of 0.315 d(0) + 0.37 d(1/2) + 0.315 d(1): Peters et al.'s bias vector
+// (0, 0.63, 0, 0.63) for depths in [-1, 1] taken to depths in [0, 1] by z = (u + 1) / 2.
+// Mixing distributions commutes with that affine map, and the bound is invariant under it,
+// so this is their bias. The (0.5, 0.5, 0.5, 0.5) of the two points 0 and 1 is not used: its
+// Hankel matrix is singular, and b' of a map whose depths are all 0 or 1 would be too.
+const Moments4 kMsmBiasTarget = {0.5, 0.4075, 0.36125, 0.338125};
+
+Moments4 msmPowerMoments(double z) {
+  const double z2 = z * z;
+  return {z, z2, z2 * z, z2 * z2};
+}
+
+Moments4 msmBiasMoments(const Moments4& b, double alpha) {
+  Moments4 out;
+  for (int i = 0; i < 4; ++i) out[i] = (1.0 - alpha) * b[i] + alpha * kMsmBiasTarget[i];
+  return out;
+}
+
+namespace {
+// Sec. 4.3, as printed (column-vector form: row i of Theta gives quantized moment i).
+constexpr double kTheta[4][4] = {{-2.07224649, 32.23703778, -68.571074599, 39.3703274134},
+                                 {13.7948857237, -59.4683975703, 82.0359750338, -35.364903257},
+                                 {0.105877704, -1.9077466311, 9.3496555107, -6.6543490743},
+                                 {9.7924062118, -33.7652110555, 47.9456096605, -23.9728048165}};
+constexpr double kThetaInverse[4][4] = {{0.2227744146, 0.0771972861, 0.7926986636, 0.0319417555},
+                                        {0.1549679261, 0.1394629426, 0.7963415838, -0.1722823173},
+                                        {0.1451988946, 0.2120202157, 0.7258694464, -0.2758014811},
+                                        {0.163127443, 0.2591432266, 0.6539092497, -0.3376131734}};
+constexpr double kQuantizeOffset = 0.035955884801;
+}  // namespace
+
+Moments4 msmQuantize(const Moments4& b) {
+  Moments4 q{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) q[i] += kTheta[i][j] * b[j];
+  q[0] += kQuantizeOffset;
+  return q;
+}
+
+Moments4 msmDequantize(const Moments4& q) {
+  Moments4 c = q;
+  c[0] -= kQuantizeOffset;
+  Moments4 b{};
+  for (int i = 0; i < 4; ++i)
+    for (int j = 0; j < 4; ++j) b[i] += kThetaInverse[i][j] * c[j];
+  return b;
+}
+
+double msmHamburgerShadow(const Moments4& m, double zf, double alpha) {
+  const Moments4 b = msmBiasMoments(m, alpha);  // step 1
+  // Step 2: solve B c = (1, zf, zf^2) with B = [[1, b1, b2], [b1, b2, b3], [b2, b3, b4]] by
+  // B = L D L^T (L unit lower triangular): L21 = b1, L31 = b2, D22 = b2 - b1^2,
+  // L32 = (b3 - b1 b2) / D22, D33 = b4 - b2^2 - L32^2 D22.
+  const double d22 = b[1] - b[0] * b[0];
+  const double l32 = (b[2] - b[0] * b[1]) / d22;
+  const double d33 = b[3] - b[1] * b[1] - l32 * l32 * d22;
+  double c1 = 1.0, c2 = zf - b[0], c3 = zf * zf - b[1] - l32 * c2;  // forward: L y = rhs
+  c2 /= d22;                                                        // D^-1
+  c3 /= d33;
+  c2 -= l32 * c3;  // backward: L^T c = y
+  c1 -= b[0] * c2 + b[1] * c3;
+  // Step 3: the roots z2 <= z3 of c3 z^2 + c2 z + c1 = 0 (real and distinct for a positive
+  // definite B), in the cancellation-free form.
+  const double disc = std::max(c2 * c2 - 4.0 * c3 * c1, 0.0);
+  const double q = -0.5 * (c2 + std::copysign(std::sqrt(disc), c2));
+  double r0 = q / c3, r1 = c1 / q;
+  const double z2 = std::min(r0, r1), z3 = std::max(r0, r1);
+  // Steps 4-6: the weights of the three-point solution at z2, z3 and zf.
+  if (zf <= z2) return 0.0;
+  if (zf <= z3) return (zf * z3 - b[0] * (zf + z3) + b[1]) / ((z3 - z2) * (zf - z2));
+  return 1.0 - (z2 * z3 - b[0] * (z2 + z3) + b[1]) / ((zf - z2) * (zf - z3));
+}
+
+double msmVisibility(const Moments4& b, double zf, double alpha, double bleedReduction) {
+  const double v = 1.0 - std::clamp(msmHamburgerShadow(b, zf, alpha), 0.0, 1.0);
+  return bleedReduction > 0 ? linstep(bleedReduction, 1.0, v) : v;
+}
+
+double msmTwoDepthVisibility(double a, double b, double w, double zf) {
+  if (zf <= a) return 1.0;
+  return zf <= b ? 1.0 - w : 0.0;
+}
+
 }  // namespace shadowc::rt::cpu

@@ -86,4 +86,31 @@ double evsm4Visibility(const std::array<double, 4>& m, double d, double cPos, do
 // p = (dx^2 / 4) / (dx^2 / 2 + dx dy + dy^2), dx = b - a, dy = c - b. The truth is 0.
 double vsmStackedPlanesBleeding(double a, double b, double c);
 
+// --- Moment shadow mapping (Peters & Klein 2015, "Moment Shadow Mapping", I3D) --------------
+// Four power moments b = (z, z^2, z^3, z^4) per texel (sec. 3), filtered like any moments.
+using Moments4 = std::array<double, 4>;
+Moments4 msmPowerMoments(double z);
+// The moment bias (Algorithm 3 step 1): b' = (1 - alpha) b + alpha b*, with b* the moments of a
+// fixed distribution with three support points (kMsmBiasTarget). b' is then the moment vector
+// of a mixture with at least three support points, so its Hankel matrix is positive definite
+// for every valid b (also for a single depth, zero variance, or depths exactly 0 and 1).
+extern const Moments4 kMsmBiasTarget;
+Moments4 msmBiasMoments(const Moments4& b, double alpha);
+// The optimized quantization of sec. 4.3: q = Theta b + (0.035955884801, 0, 0, 0) maps the
+// power moments of every depth in [0, 1] into [0, 1]^4 with the four channels decorrelated, so
+// 16-bit storage keeps the information the reconstruction needs; msmDequantize inverts it.
+Moments4 msmQuantize(const Moments4& b);
+Moments4 msmDequantize(const Moments4& q);
+// The Hamburger 4MSM reconstruction (Algorithm 3) on the biased moments: the sharp lower bound
+// G of P(z < zf) over all distributions with moments b' (Cholesky of the 3x3 Hankel matrix,
+// the quadratic's two roots z2 <= z3, the three-point solution). Returns G unclamped.
+double msmHamburgerShadow(const Moments4& b, double zf, double alpha);
+// Visibility 1 - clamp(G, 0, 1) (the lit fraction's upper bound), with light-bleeding
+// reduction linstep(amount, 1, v) as for Chebyshev (amount 0 = off).
+double msmVisibility(const Moments4& b, double zf, double alpha, double bleedReduction);
+// Closed form of the unbiased bound on a two-depth map (a fraction w of the kernel at depth a,
+// the rest at b > a): four moments determine a two-point distribution exactly, so the bound is
+// the truth: 1 for zf <= a, 1 - w for a < zf <= b, 0 for zf > b (sec. 3: "exact for two depths").
+double msmTwoDepthVisibility(double a, double b, double w, double zf);
+
 }  // namespace shadowc::rt::cpu

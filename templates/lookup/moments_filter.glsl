@@ -5,7 +5,7 @@
 // the bilinear level-0 value (a fixed kernel realised by the blur prefilter).
 // Estimators by warp (briefing table for the stored channels):
 //   linear -> Chebyshev (chebyshev.glsl), exp -> ESM (esm.glsl), evsm2/4 -> EVSM (evsm.glsl),
-//   power_cdf -> power-CDF (power_cdf.glsl).
+//   power_cdf -> power-CDF (power_cdf.glsl), msm -> Hamburger 4MSM (msm.glsl).
 #ifndef SHADOWC_MOMENTS_FILTER_GLSL
 #define SHADOWC_MOMENTS_FILTER_GLSL
 
@@ -43,6 +43,8 @@ float shadowc_estimate(vec4 m, float d, float minVariance) {
   return shadowc_esm(m.x, d);
 #elif SHADOWC_WARP == SHADOWC_WARP_EVSM2 || SHADOWC_WARP == SHADOWC_WARP_EVSM4
   return shadowc_evsm(m, d, minVariance);
+#elif SHADOWC_WARP == SHADOWC_WARP_MSM
+  return shadowc_reduceBleeding(shadowc_msm(m, d));
 #else
   return shadowc_powerCdf(m.xyz, d);
 #endif

@@ -33,6 +33,8 @@
 #include "lookup/evsm.glsl"
 #elif SHADOWC_WARP == SHADOWC_WARP_POWER_CDF
 #include "lookup/power_cdf.glsl"
+#elif SHADOWC_WARP == SHADOWC_WARP_MSM
+#include "lookup/msm.glsl"
 #endif
 #if SHADOWC_HAS_SAT
 #include "lookup/sat.glsl"

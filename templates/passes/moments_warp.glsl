@@ -6,6 +6,8 @@
 //   SHADOWC_WARP 2 evsm2      rg   (e+, e+^2), e+ = exp(c+ (d - 1))  lauritzen2008 sec. 3.2 (positive warp)
 //   SHADOWC_WARP 3 evsm4      rgba (e+, e+^2, -e-, e-^2), e- = exp(-c- (d - 1)) >= 1 (negative warp)
 //   SHADOWC_WARP 4 power_cdf  rgb  (min, max, mean) of d; a unused  power-cdf-shadow-maps.txt
+//   SHADOWC_WARP 5 msm        rgba (d, d^2, d^3, d^4), quantized for 16-bit storage
+//                                                                 Peters & Klein 2015 (msm_moments.glsl)
 // Layered (SHADOWC_LAYERS > 1): layer i first remaps d linearly into its range
 // [p_i, q_i] = [split_i - overlap, split_{i+1} + overlap], clamped to [0,1] (lauritzen2008 eq. 6).
 #ifndef SHADOWC_MOMENTS_WARP_GLSL
@@ -20,6 +22,9 @@
 #ifndef SHADOWC_EXP_NEGATIVE
 #define SHADOWC_EXP_NEGATIVE 5.0
 #endif
+#if SHADOWC_WARP == 5
+#include "passes/msm_moments.glsl"
+#endif
 
 vec4 shadowc_warpMoments(float d) {
 #if SHADOWC_WARP == 0
@@ -33,6 +38,8 @@ vec4 shadowc_warpMoments(float d) {
   float ep = exp(SHADOWC_EXP_POSITIVE * (d - 1.0));
   float en = exp(-SHADOWC_EXP_NEGATIVE * (d - 1.0));
   return vec4(ep, ep * ep, -en, en * en);
+#elif SHADOWC_WARP == 5
+  return shadowc_msmEncode(d);
 #else
   return vec4(d, d, d, 0.0);  // min, max, mean of a single texel
 #endif

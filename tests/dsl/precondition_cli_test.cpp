@@ -35,6 +35,13 @@ const Precondition kPreconditions[] = {
      "E0417", 2, 9, "moments linear\nstorage sat(fp32_centered)\nblocker moments\nkernel uniform(4)"},
     {"vssm_evsm2_warp", "moments evsm2(exponent: 20)\nstorage sat(fp32_centered)\nblocker moments\nkernel uniform(4)",
      "E0417", 2, 9, "moments linear\nstorage sat(fp32_centered)\nblocker moments\nkernel uniform(4)"},
+    {"vssm_msm_warp", "moments msm\nstorage sat(int32)\nblocker moments\nkernel uniform(4)", "E0417", 2, 9,
+     "moments linear\nstorage sat(int32)\nblocker moments\nkernel uniform(4)"},
+    // Moment shadow maps: what the storage must give four moments (Peters & Klein 2015).
+    {"msm_layers", "moments msm(layers: 2)", "E0440", 2, 21, "moments msm(layers: 1)"},
+    {"msm_fp16", "moments msm\nstorage fp16", "E0441", 3, 9, "moments msm\nstorage unorm16"},
+    {"msm_fp32_sat", "moments msm\nstorage sat(fp32_centered)\nkernel fixed(5)", "E0442", 3, 9,
+     "moments msm\nstorage sat(int32)\nkernel fixed(5)"},
     // "the VSSM path works on a single (unlayered) moments map"
     {"vssm_layers", "moments linear(layers: 2)\nstorage sat(int32)\nblocker moments\nkernel uniform(4)", "E0418", 2, 24,
      "moments linear(layers: 1)\nstorage sat(int32)\nblocker moments\nkernel uniform(4)"},

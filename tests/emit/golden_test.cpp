@@ -33,6 +33,7 @@ TEST(EmitGolden, PcfDepthOnly) { checkGoldens(driver::compileSpec(test::pcfSpec(
 TEST(EmitGolden, VssmInt32WithMinMax) { checkGoldens(driver::compileSpec(test::vssmInt32Spec())); }
 TEST(EmitGolden, LayeredEvsm4Fp16) { checkGoldens(driver::compileSpec(test::layeredEvsmSpec())); }
 TEST(EmitGolden, PowerCdfBlurMips) { checkGoldens(driver::compileSpec(test::blurMipSpec())); }
+TEST(EmitGolden, MsmUnorm16Sample) { checkGoldens(test::compileSample("msm_unorm16")); }
 
 // The sibling that proves the comparison can fail.
 TEST(EmitGolden, AChangedByteIsReported) {

@@ -2,12 +2,16 @@
 // and receivers placed exactly (identity light view, accuracy_harness.h):
 //  * Chebyshev (VSM) on a two-depth map equals the formula on the same filtered moments (1e-5);
 //  * plain VSM light bleeding on the stacked-planes set-up equals lauritzen2008 eq. (4) (1e-3);
-//  * n x n grid PCF equals rt::cpu::pcfGridAt (1e-5).
+//  * n x n grid PCF equals rt::cpu::pcfGridAt (1e-5);
+//  * MSM (fp32 and unorm16-quantized) on the stacked planes equals the two-depth closed form.
 // Each has a sibling that compares with a deliberately wrong reference and must fail.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <string>
 #include <vector>
 
 #include "gpu/accuracy_harness.h"
@@ -263,6 +267,96 @@ TEST_F(ClosedFormLookupTest, PcfWrongReferencesFail) {
   ASSERT_NE(c.cf, nullptr);
   EXPECT_FALSE(visibilityMatches(c.run.visibility, pcfReference(c, 5, 1.0), c.receivers, 1e-5));
   EXPECT_FALSE(visibilityMatches(c.run.visibility, pcfReference(c, 3, 0.0), c.receivers, 1e-5));
+}
+
+// ---- MSM on the stacked-planes set-up (Peters & Klein 2015 sec. 3, Algorithm 3) -----------------
+// The map of the plain-VSM check: at u = 0.5 the kernel holds equal parts of A (0.2) and B (0.45).
+// Four moments determine two depths exactly, so the unbiased Hamburger bound is the truth in
+// closed form (rt::cpu::msmTwoDepthVisibility): 1 in front of A, 1/2 between A and B, 0 behind B,
+// where plain VSM leaks eq. (4). The moment bias moves the bound by O(alpha): in double, on these
+// receivers, 8.9e-4 for fp32's alpha 3e-6 and 8.7e-3 for 16-bit's 3e-5 (each test asserts it is
+// under half its tolerance); the rest of the tolerance is fp32 evaluation and 16-bit rounding.
+constexpr double kMsmTolerance = 0.003;
+constexpr double kMsm16Tolerance = 0.02;
+
+struct MsmCase {
+  const CompiledFilter* cf;
+  std::vector<Receiver> receivers;
+  std::vector<double> depthsSeen;
+  LookupRun run;
+};
+MsmCase runMsmStacked(rt::VulkanContext& ctx, const std::string& label, const std::string& source) {
+  MsmCase c;
+  c.cf = compileFilterCached(label, source);
+  if (!c.cf) return c;
+  for (int i = 0; i < 8; ++i)
+    for (double d : {0.1, 0.15, 0.3, 0.4, 0.5, 0.6, 0.75, 0.9})
+      c.receivers.push_back({0.5, (32.0 * i + 16.5) / kMap, d});
+  for (const Receiver& r : c.receivers) c.depthsSeen.push_back(gpuReceiverDepth(r.d, c.cf->spec.bias.constant));
+  c.run = runLookup(ctx, *c.cf, stackedMap(), c.receivers);
+  return c;
+}
+
+std::vector<double> msmClosedForm(const MsmCase& c, double weightOfA) {
+  std::vector<double> expected;
+  for (double t : c.depthsSeen) expected.push_back(rt::cpu::msmTwoDepthVisibility(kA, kB, weightOfA, t));
+  return expected;
+}
+
+// Largest deviation of the biased double-precision bound from the closed form on these receivers.
+double msmBiasEffect(const MsmCase& c) {
+  rt::cpu::Moments4 m{};
+  for (double z : {kA, kB}) {
+    const auto p = rt::cpu::msmPowerMoments(z);
+    for (int i = 0; i < 4; ++i) m[i] += 0.5 * p[i];
+  }
+  double worst = 0;
+  for (double t : c.depthsSeen)
+    worst = std::max(worst, std::fabs(rt::cpu::msmVisibility(m, t, c.cf->spec.moments.momentBias, 0) -
+                                      rt::cpu::msmTwoDepthVisibility(kA, kB, 0.5, t)));
+  return worst;
+}
+
+TEST_F(ClosedFormLookupTest, MsmOnStackedPlanesEqualsTwoDepthClosedForm) {
+  const MsmCase c = runMsmStacked(context(), "msm_blur", sampleSource("msm_blur"));
+  ASSERT_NE(c.cf, nullptr);
+  ASSERT_EQ(c.cf->spec.moments.warp, Warp::Msm);
+  ASSERT_EQ(c.cf->spec.storage.format, StorageFormat::Fp32);
+  const double bias = msmBiasEffect(c);
+  std::printf("msm fp32: alpha %g moves the double bound by %.3g\n", c.cf->spec.moments.momentBias, bias);
+  EXPECT_LT(bias, kMsmTolerance / 2);
+  const auto match = visibilityMatches(c.run.visibility, msmClosedForm(c, 0.5), c.receivers, kMsmTolerance);
+  std::printf("msm fp32 GPU vs closed form: %s\n", match.message());
+  EXPECT_TRUE(match);
+}
+
+TEST_F(ClosedFormLookupTest, MsmUnorm16QuantizedOnStackedPlanesEqualsTwoDepthClosedForm) {
+  const MsmCase c = runMsmStacked(context(), "msm_unorm16", sampleSource("msm_unorm16"));
+  ASSERT_NE(c.cf, nullptr);
+  ASSERT_EQ(c.cf->spec.storage.format, StorageFormat::Unorm16);
+  const double bias = msmBiasEffect(c);
+  std::printf("msm unorm16: alpha %g moves the double bound by %.3g\n", c.cf->spec.moments.momentBias, bias);
+  EXPECT_LT(bias, kMsm16Tolerance / 2);
+  const auto match = visibilityMatches(c.run.visibility, msmClosedForm(c, 0.5), c.receivers, kMsm16Tolerance);
+  std::printf("msm unorm16 GPU vs closed form: %s\n", match.message());
+  EXPECT_TRUE(match);
+}
+
+// Siblings: (1) the largest bias the checker accepts (1e-2) pulls the bound toward b* by more
+// than the tolerance — the check sees a mis-set reconstruction; (2) the closed form with the
+// wrong weight (A covering 3/4) is a wrong reference and must be caught.
+TEST_F(ClosedFormLookupTest, MsmPerturbedReconstructionExceedsTolerance) {
+  std::string source = sampleSource("msm_blur");
+  const std::string from = "msm(moment_bias: 0.000003)";
+  ASSERT_NE(source.find(from), std::string::npos);
+  source.replace(source.find(from), from.size(), "msm(moment_bias: 0.01)");
+  const MsmCase big = runMsmStacked(context(), "msm_blur_bias_1e-2", source);
+  ASSERT_NE(big.cf, nullptr);
+  ASSERT_EQ(big.cf->spec.moments.momentBias, 0.01);
+  EXPECT_FALSE(visibilityMatches(big.run.visibility, msmClosedForm(big, 0.5), big.receivers, kMsmTolerance));
+  const MsmCase c = runMsmStacked(context(), "msm_blur", sampleSource("msm_blur"));
+  ASSERT_NE(c.cf, nullptr);
+  EXPECT_FALSE(visibilityMatches(c.run.visibility, msmClosedForm(c, 0.75), c.receivers, kMsmTolerance));
 }
 
 }  // namespace

@@ -140,3 +140,41 @@ TEST(SpecJson, GoldenForTheDesignExample) {
   const std::string diff = test::compareGolden(golden, specToJson(*r.spec).dump(2) + "\n");
   EXPECT_TRUE(diff.empty()) << diff;
 }
+
+// Moment shadow maps (Peters & Klein 2015): the moment bias follows the storage's bits, only
+// msm's spec JSON carries it, and an fp32 SAT is accepted only where its worst-case error of
+// the smallest box mean stays below the bias (both sides of that boundary).
+TEST(Msm, MomentBiasDefaultsFollowStorage) {
+  EXPECT_EQ(load("moments msm").moments.momentBias, 3e-6);
+  EXPECT_EQ(load("moments msm\nstorage unorm16").moments.momentBias, 3e-5);
+  EXPECT_EQ(load("moments msm\nstorage sat(int32)\nkernel fixed(5)").moments.momentBias, 3e-5);
+  EXPECT_EQ(load("moments msm(0.0001)\nstorage unorm16").moments.momentBias, 1e-4);
+  EXPECT_EQ(load("moments msm").moments.warp, Warp::Msm);
+}
+
+TEST(Msm, OnlyMsmSpecJsonHasAMomentBias) {
+  EXPECT_TRUE(specToJson(load("moments msm"))["moments"].contains("moment_bias"));
+  EXPECT_FALSE(specToJson(load("moments linear"))["moments"].contains("moment_bias"));
+}
+
+TEST(Msm, CombinationRules) {
+  EXPECT_EQ(codes("moments msm(layers: 2)"), Codes{"E0440"});
+  EXPECT_EQ(codes("moments msm\nstorage fp16"), Codes{"E0441"});
+  EXPECT_EQ(codes("moments msm\nstorage sat(int32)\nkernel fixed(5)"), Codes{});
+  EXPECT_EQ(codes("moments msm(min_variance: 0.001)"), Codes{"E0303"});  // msm has a bias instead
+  EXPECT_EQ(codes("moments msm(moment_bias: 0.000001)\nstorage unorm16"), Codes{"W0540"});
+  EXPECT_EQ(codes("moments msm\nbleeding reduce(0.2)"), Codes{});  // linstep applies to the bound too
+}
+
+TEST(Msm, Fp32SatPrecisionBothSidesOfTheBound) {
+  // Bound 2 * 2^-24 * W^3 / ((N + 1) / 2)^2: W = 16, N = 63 -> 4.9e-7 (< 3e-6 accepted);
+  // N = 21 -> 4.1e-6 (rejected); W = 2048, any N -> far above.
+  const std::string sat = "moments msm\nstorage sat(fp32_centered)\n";
+  EXPECT_EQ(codes(sat + "map_size 16\nkernel fixed(63)"), Codes{});
+  EXPECT_EQ(codes(sat + "map_size 16\nkernel fixed(21)"), Codes{"E0442"});
+  EXPECT_EQ(codes(sat + "kernel fixed(63)"), Codes{"E0442"});
+  FilterSpec s = load(sat + "map_size 16\nkernel fixed(63)");
+  const spec::MsmSatPrecision p = spec::msmFp32SatPrecision(s);
+  EXPECT_EQ(p.boxTexels, 32 * 32);
+  EXPECT_NEAR(p.meanError, 2.0 * std::ldexp(1.0, -24) * 4096.0 / 1024.0, 1e-15);
+}

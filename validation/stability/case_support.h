@@ -46,5 +46,6 @@ void addGeometryCases(std::vector<StabilityCase>& out);
 void addNaiveCases(std::vector<StabilityCase>& out);
 void addEarlyOutCases(std::vector<StabilityCase>& out);
 void addContactCases(std::vector<StabilityCase>& out);
+void addMsmCases(std::vector<StabilityCase>& out);
 
 }  // namespace shadowc::validation

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "plan/planner.h"
+#include "runtime/reference/cpu_filters.h"
 
 namespace shadowc::validation {
 namespace {
@@ -138,6 +139,8 @@ class Evaluator {
       }
       case Warp::PowerCdf:
         return powerCdf(m[0], m[1], m[2], d);
+      case Warp::Msm:  // Hamburger 4MSM on the exact (unquantized) moments, in double
+        return rt::cpu::msmVisibility({m[0], m[1], m[2], m[3]}, d, s_.moments.momentBias, s_.moments.bleedingReduction);
     }
     return 0;
   }
@@ -343,6 +346,10 @@ std::vector<double> warpMoments(const FilterSpec& s, double d) {
     }
     case Warp::PowerCdf:
       return {d, d, d, 0};
+    case Warp::Msm: {
+      const auto b = rt::cpu::msmPowerMoments(d);
+      return {b[0], b[1], b[2], b[3]};
+    }
   }
   return {0, 0, 0, 0};
 }

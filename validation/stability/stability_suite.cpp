@@ -129,6 +129,7 @@ const std::vector<StabilityCase>& stabilityCases() {
     addNaiveCases(out);
     addEarlyOutCases(out);
     addContactCases(out);
+    addMsmCases(out);
     return out;
   }();
   return cases;

@@ -1,13 +1,13 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #line 1 "passes/moments_warp.glsl"
-#line 24
+#line 29
 vec4 shadowc_warpMoments(float d){
 
   return vec4(d, d * d, 0.0, 0.0);
-#line 39
+#line 46
 }
-#line 42
+#line 49
 float shadowc_layerRemap(float d, float p, float q){ return clamp((d - p)/ max(q - p, 1e-6), 0.0, 1.0);}
 #line 26 "templates/passes/moments.comp"
 

@@ -149,7 +149,7 @@ float shadowc_pcf(ShadowcReceiver r, float w){
 #line 70
 }
 #line 21 "lookup/shadowc_lookup.glsl"
-#line 50
+#line 52
 bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
@@ -163,13 +163,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 81
+#line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 99
+#line 101
   float v = shadowc_pcf(r, 7.0);
-#line 102
+#line 104
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -175,7 +175,7 @@ float shadowc_pcss(ShadowcReceiver r){
   return shadowc_pcf(r, shadowc_penumbraTexels(r, zb));
 }
 #line 24 "lookup/shadowc_lookup.glsl"
-#line 50
+#line 52
 bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
@@ -189,13 +189,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 81
+#line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 94
+#line 96
   float v = shadowc_pcss(r);
-#line 102
+#line 104
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

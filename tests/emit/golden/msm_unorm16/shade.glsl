@@ -1,0 +1,300 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+#line 1 "frame.glsl"
+#line 19
+layout(set = 0, binding = 0, std140)uniform ShadowcFrame {
+  mat4 lightView;
+  vec4 lightParams;
+  vec4 lightShape;
+  vec4 mapInfo;
+  vec4 screenInfo;
+} frame;
+#line 28
+vec4 shadowc_lightSpace(vec3 worldPos){
+  vec3 p =(frame . lightView * vec4(worldPos, 1.0)). xyz;
+  vec2 uv = 0.5 + 0.5 * p . xy /(p . z * frame . lightParams . x);
+  float d =(p . z - frame . lightParams . y)/(frame . lightParams . z - frame . lightParams . y);
+  return vec4(uv, d, p . z);
+}
+
+float shadowc_viewZ(float d){ return frame . lightParams . y + d *(frame . lightParams . z - frame . lightParams . y);}
+#line 38
+float shadowc_lightSizeUV(float lightWidth){
+  return lightWidth /(2.0 * frame . lightParams . y * frame . lightParams . x);
+}
+#line 44
+float shadowc_searchWidthUV(float lightWidth, float zr){
+  return shadowc_lightSizeUV(lightWidth)*(zr - frame . lightParams . y)/ zr;
+}
+#line 50
+float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb){
+  return shadowc_lightSizeUV(lightWidth)* frame . lightParams . y *(zr - zb)/(zb * zr);
+}
+#line 11 "templates/shade.comp"
+#line 1 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/defaults.glsl"
+#line 12 "lookup/shadowc_lookup.glsl"
+#line 1 "frame.glsl"
+#line 13 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/resources.glsl"
+#line 10
+layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
+#line 14
+layout(set = 0, binding = 5)uniform sampler2DArray shadowc_moments;
+#line 14 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/kernel.glsl"
+#line 8
+struct ShadowcReceiver {
+  vec2 uv;
+  vec2 texel;
+  float d;
+  float zr;
+  vec3 worldPos;
+  float lightWidth;
+};
+
+float shadowc_lightWidth(){
+#line 21
+  return max(frame . lightParams . w, 0.0);
+
+}
+
+ivec2 shadowc_mapSize(){ return textureSize(shadowc_shadowDepth, 0);}
+
+float shadowc_depthAt(ivec2 t){
+  return texelFetch(shadowc_shadowDepth, clamp(t, ivec2(0), shadowc_mapSize()- 1), 0). r;
+}
+#line 33
+float shadowc_clampTexels(float w){ return(w >= 1.0)? min(w, 64.0): 1.0;}
+#line 37
+ivec4 shadowc_kernelRect(vec2 c, float w){
+  int n = int(shadowc_clampTexels(w)+ 0.5);
+  ivec2 lo = ivec2(floor(c - 0.5 * float(n)+ 0.5));
+  ivec2 hi = lo + ivec2(n - 1);
+  ivec2 last = shadowc_mapSize()- 1;
+  return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
+}
+#line 46
+float shadowc_searchTexels(ShadowcReceiver r){
+  return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
+}
+#line 52
+float shadowc_penumbraTexels(ShadowcReceiver r, float zBlocker){
+  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), frame . lightParams . y);
+  return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
+}
+#line 58
+float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
+#line 15 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/bias.glsl"
+#line 12
+vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
+  vec3 p = worldPos;
+#line 19
+  vec3 pl =(frame . lightView * vec4(p, 1.0)). xyz;
+  return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
+}
+
+float shadowc_bias(vec3 worldPos, vec3 worldNormal){
+#line 32
+  return 0.001;
+
+}
+#line 16 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/chebyshev.glsl"
+#line 14
+float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance){
+  if(t <= mean)return 1.0;
+  float variance = max(meanSq - mean * mean, minVariance);
+  float dt = t - mean;
+  float denom = variance + dt * dt;
+  return denom > 0.0 ? shadowc_unit(variance / denom): 0.0;
+}
+
+float shadowc_reduceBleeding(float p){
+#line 26
+  return p;
+
+}
+#line 30 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/msm.glsl"
+#line 1 "passes/msm_moments.glsl"
+#line 21
+const mat4 shadowc_msmTheta = mat4(- 2.07224649, 13.7948857237, 0.105877704, 9.7924062118,
+                                   32.23703778, - 59.4683975703, - 1.9077466311, - 33.7652110555,
+                                   - 68.571074599, 82.0359750338, 9.3496555107, 47.9456096605,
+                                   39.3703274134, - 35.364903257, - 6.6543490743, - 23.9728048165
+);
+const mat4 shadowc_msmThetaInverse = mat4(0.2227744146, 0.1549679261, 0.1451988946, 0.163127443,
+                                          0.0771972861, 0.1394629426, 0.2120202157, 0.2591432266,
+                                          0.7926986636, 0.7963415838, 0.7258694464, 0.6539092497,
+                                          0.0319417555, - 0.1722823173, - 0.2758014811, - 0.3376131734
+);
+const vec4 shadowc_msmOffset = vec4(0.035955884801, 0.0, 0.0, 0.0);
+
+vec4 shadowc_msmPowerMoments(float z){
+  float z2 = z * z;
+  return vec4(z, z2, z2 * z, z2 * z2);
+}
+#line 39
+vec4 shadowc_msmEncode(float z){
+
+  return shadowc_msmTheta * shadowc_msmPowerMoments(z)+ shadowc_msmOffset;
+#line 45
+}
+#line 48
+vec4 shadowc_msmDecode(vec4 stored){
+
+  return shadowc_msmThetaInverse *(stored - shadowc_msmOffset);
+#line 54
+}
+#line 23 "lookup/msm.glsl"
+#line 28
+const vec4 shadowc_msmBiasTarget = vec4(0.5, 0.4075, 0.36125, 0.338125);
+#line 31
+float shadowc_msmShadow(vec4 m, float zf){
+  vec4 b = mix(m, shadowc_msmBiasTarget, 3e-05);
+#line 35
+  float d22 = max(b . y - b . x * b . x, 1e-20);
+  float l32 =(b . z - b . x * b . y)/ d22;
+  float d33 = max(b . w - b . y * b . y - l32 * l32 * d22, 1e-20);
+  float c2 = zf - b . x;
+  float c3 = zf * zf - b . y - l32 * c2;
+  c2 /= d22;
+  c3 /= d33;
+  c2 -= l32 * c3;
+  float c1 = 1.0 - b . x * c2 - b . y * c3;
+
+  float disc = max(c2 * c2 - 4.0 * c3 * c1, 0.0);
+  float q = - 0.5 *(c2 +(c2 < 0.0 ? - sqrt(disc): sqrt(disc)));
+  float r0 = clamp(q / c3, - 1e4, 1e4);
+  float r1 = clamp(c1 / q, - 1e4, 1e4);
+  float z2 = min(r0, r1), z3 = max(r0, r1);
+
+  float g;
+  if(zf <= z2){
+    g = 0.0;
+  } else if(zf <= z3){
+    g =(zf * z3 - b . x *(zf + z3)+ b . y)/((z3 - z2)*(zf - z2));
+  } else {
+    g = 1.0 -(z2 * z3 - b . x *(z2 + z3)+ b . y)/((zf - z2)*(zf - z3));
+  }
+  return shadowc_unit(g);
+}
+#line 63
+float shadowc_msm(vec4 stored, float zf){
+  float v = 1.0 - shadowc_msmShadow(shadowc_msmDecode(stored), zf);
+  return shadowc_unit(v);
+}
+#line 38 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/layered.glsl"
+#line 14
+float shadowc_split(int i){
+#line 22
+  return i == 0 ? 0.0 : 1.0;
+
+}
+
+vec2 shadowc_layerRange(int i){
+#line 30
+  return vec2(0.0, 1.0);
+
+}
+#line 35
+float shadowc_layerDepth(float d, int i){
+#line 40
+  return d;
+
+}
+#line 45
+float shadowc_layerMinVariance(int i){
+#line 51
+  return 1e-05;
+
+}
+#line 56
+int shadowc_layerOf(float d){
+  int j = 0;
+  for(int i = 1;i < 1;++ i)
+    if(d >= shadowc_split(i))j = i;
+  return j;
+}
+#line 43 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/moments_filter.glsl"
+#line 27
+vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
+#line 31
+  return textureLod(shadowc_moments, vec3(uv, float(layer)), 0 != 0 ? log2(max(w, 1.0)): 0.0);
+
+}
+#line 36
+float shadowc_estimate(vec4 m, float d, float minVariance){
+#line 47
+  return shadowc_reduceBleeding(shadowc_msm(m, d));
+#line 51
+}
+
+float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
+  return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
+                          shadowc_layerMinVariance(layer));
+}
+#line 59
+float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
+  int j = shadowc_layerOf(d);
+  float v = shadowc_layerVisibility(uv, rect, w, d, j);
+#line 73
+  return v;
+}
+#line 78
+float shadowc_momentsTechnique(ShadowcReceiver r){
+#line 88
+  float w = 1.0;
+
+  return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
+}
+#line 44 "lookup/shadowc_lookup.glsl"
+#line 52
+bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
+  vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
+  r . worldPos = worldPos;
+  r . lightWidth = shadowc_lightWidth();
+  if(p . w == 0.0)return false;
+  vec4 ls = shadowc_lightSpace(p . xyz);
+  r . uv = ls . xy;
+  r . texel = ls . xy * vec2(shadowc_mapSize());
+  r . d = ls . z - shadowc_bias(worldPos, worldNormal);
+  r . zr = max(ls . w, frame . lightParams . y);
+
+  return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
+}
+#line 83
+float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
+  ShadowcReceiver r;
+  if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
+#line 94
+  float v = shadowc_momentsTechnique(r);
+#line 104
+  return shadowc_unit(v);
+}
+#line 12 "templates/shade.comp"
+
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1)in;
+
+layout(set = 0, binding = 1, rgba32f)readonly uniform image2D gbuffer_position;
+layout(set = 0, binding = 2, rgba32f)readonly uniform image2D gbuffer_normal;
+layout(set = 0, binding = 3, r32f)writeonly uniform image2D visibility;
+
+void main(){
+  ivec2 pixel = ivec2(gl_GlobalInvocationID . xy);
+  ivec2 size = imageSize(visibility);
+  if(any(greaterThanEqual(pixel, size)))return;
+  vec4 position = imageLoad(gbuffer_position, pixel);
+  float v = 1.0;
+  if(position . w != 0.0){
+    vec3 normal = imageLoad(gbuffer_normal, pixel). xyz;
+    v = shadowc_visibility(position . xyz, normal);
+  }
+#line 31
+  v =(v >= 0.0)? min(v, 1.0): 0.0;
+  imageStore(visibility, pixel, vec4(v, 0.0, 0.0, 0.0));
+}
