@@ -2,11 +2,13 @@
 // glslc-style flags (STYLE.md): -O / -O0, -M / -MD, -Werror; see docs/cli.md.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "backend/spirv_backend.h"
@@ -58,24 +60,26 @@ int run(CompileArgs& a, CLI::App& sub) {
   if (a.input.empty()) return error("no input file (shadowc compile FILE.shadow -o DIR)");
   std::set<driver::OutputKind> kinds;
   {
+    static const std::vector<std::pair<std::string, driver::OutputKind>> kKinds{
+        {"glsl", driver::OutputKind::Glsl},         {"spirv", driver::OutputKind::Spirv},
+        {"manifest", driver::OutputKind::Manifest}, {"hlsl", driver::OutputKind::Hlsl},
+        {"msl", driver::OutputKind::Msl},           {"cpp", driver::OutputKind::CppHeader}};
+    const char* expected = "(expected a subset of glsl,spirv,manifest,hlsl,msl,cpp)";
     std::stringstream ss(a.emit);
     for (std::string k; std::getline(ss, k, ',');) {
-      if (k == "glsl")
-        kinds.insert(driver::OutputKind::Glsl);
-      else if (k == "spirv")
-        kinds.insert(driver::OutputKind::Spirv);
-      else if (k == "manifest")
-        kinds.insert(driver::OutputKind::Manifest);
-      else
-        return error("--emit: unknown kind '" + k + "' (expected a subset of glsl,spirv,manifest)");
+      auto it = std::find_if(kKinds.begin(), kKinds.end(), [&](const auto& e) { return e.first == k; });
+      if (it == kKinds.end()) return error("--emit: unknown kind '" + k + "' " + expected);
+      kinds.insert(it->second);
     }
-    if (kinds.empty()) return error("--emit: no kind given (expected a subset of glsl,spirv,manifest)");
+    if (kinds.empty()) return error(std::string("--emit: no kind given ") + expected);
   }
 
   // Stop as early as the request allows: --print-spec alone needs the checker, -M the plan.
   driver::Options options;
   options.optimize = a.optimize;
   options.warningsAsErrors = a.werror;
+  for (driver::OutputKind k : {driver::OutputKind::Hlsl, driver::OutputKind::Msl, driver::OutputKind::CppHeader})
+    if (kinds.count(k)) options.engineOutputs.insert(k);
   if (a.outputDir.empty())
     options.stopAfter = driver::Stage::Check;
   else if (a.depsToStdout)
@@ -102,7 +106,7 @@ int run(CompileArgs& a, CLI::App& sub) {
   if (!r.plan) return didNotCompile();
 
   std::vector<std::string> outputs;
-  for (const auto& f : driver::plannedOutputs(*r.plan, spec))
+  for (const auto& f : driver::plannedOutputs(*r.plan, spec, options.engineOutputs))
     if (kinds.count(driver::outputKindOf(f))) outputs.push_back((dir / f).string());
   if (a.depsToStdout) {  // glslc -M: dependencies only, nothing compiled or written
     fmt::print("{}", makeDependencyRule(outputs, a.input));
@@ -122,7 +126,8 @@ CommandRunner registerCompile(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("compile", "Compile a filter description to GLSL, SPIR-V and manifest.json");
   sub->add_option("input", args->input, "the .shadow filter description");
   sub->add_option("-o,--output", args->outputDir, "output directory (created; files replaced atomically)");
-  sub->add_option("--emit", args->emit, "comma-separated subset of glsl,spirv,manifest (default: all)");
+  sub->add_option("--emit", args->emit,
+                  "comma-separated subset of glsl,spirv,manifest,hlsl,msl,cpp (default: glsl,spirv,manifest)");
   sub->add_flag("--print-spec", args->printSpec, "print the normalized FilterSpec as JSON and stop (unless -o)");
   sub->add_flag("--print-recipe", args->printRecipe, "print the -O spirv-opt recipe, one pass per line");
   sub->footer(
@@ -132,7 +137,9 @@ CommandRunner registerCompile(CLI::App& app) {
       "  -M          print make dependencies of the outputs to stdout; compile nothing\n"
       "  -MD         also write DIR/<filter>.d with those dependencies\n"
       "  -Werror     treat warnings (filter description and GLSL) as errors\n"
-      "Outputs: DIR/manifest.json, DIR/<pass>.glsl, DIR/<pass>.spv, DIR/<filter>_lookup.glsl (docs/manifest.md).");
+      "Outputs: DIR/manifest.json, DIR/<pass>.glsl, DIR/<pass>.spv, DIR/<filter>_lookup.glsl (docs/manifest.md);\n"
+      "with --emit hlsl/msl also DIR/<pass>.hlsl/.metal and DIR/<filter>_lookup.hlsl/.metal, with cpp DIR/<filter>.h\n"
+      "(docs/integration.md).");
   sub->allow_extras();
   return [args, sub] { return run(*args, *sub); };
 }
