@@ -29,6 +29,7 @@ struct CompileArgs {
   bool depsToStdout = false;  // -M
   bool depsFile = false;      // -MD
   bool werror = false;
+  uint32_t lookupSet = 0, lookupBindingBase = 0;
 };
 
 int error(const std::string& message) {
@@ -78,6 +79,10 @@ int run(CompileArgs& a, CLI::App& sub) {
   driver::Options options;
   options.optimize = a.optimize;
   options.warningsAsErrors = a.werror;
+  if (a.lookupSet > kMaxLookupSet) return error("--lookup-set: at most " + std::to_string(kMaxLookupSet));
+  if (a.lookupBindingBase > kMaxLookupBindingBase)
+    return error("--lookup-binding-base: at most " + std::to_string(kMaxLookupBindingBase));
+  options.lookup = {a.lookupSet, a.lookupBindingBase};
   for (driver::OutputKind k : {driver::OutputKind::Hlsl, driver::OutputKind::Msl, driver::OutputKind::CppHeader})
     if (kinds.count(k)) options.engineOutputs.insert(k);
   if (a.outputDir.empty())
@@ -128,6 +133,10 @@ CommandRunner registerCompile(CLI::App& app) {
   sub->add_option("-o,--output", args->outputDir, "output directory (created; files replaced atomically)");
   sub->add_option("--emit", args->emit,
                   "comma-separated subset of glsl,spirv,manifest,hlsl,msl,cpp (default: glsl,spirv,manifest)");
+  sub->add_option("--lookup-set", args->lookupSet,
+                  "descriptor set of everything <filter>_lookup.glsl declares (default 0; manifest shade.set)");
+  sub->add_option("--lookup-binding-base", args->lookupBindingBase,
+                  "added to every binding <filter>_lookup.glsl declares (default 0: the shade pass's own)");
   sub->add_flag("--print-spec", args->printSpec, "print the normalized FilterSpec as JSON and stop (unless -o)");
   sub->add_flag("--print-recipe", args->printRecipe, "print the -O spirv-opt recipe, one pass per line");
   sub->footer(

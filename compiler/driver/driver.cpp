@@ -36,6 +36,7 @@ FilterEmitResult emitStage(const FilterSpec& spec, const PassGraph& /*plan*/, co
   EmitOptions eo;
   eo.optimize = options.optimize;
   eo.warningsAsErrors = options.warningsAsErrors;
+  eo.lookup = options.lookup;
   return emitFilter(spec, eo);
 }
 

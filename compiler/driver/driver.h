@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "emit/content_hash.h"  // EmittedFile
+#include "emit/lookup_interface.h"
 #include "manifest/compiled_passes.h"
 #include "manifest/manifest.h"
 #include "plan/pass_graph.h"
@@ -36,6 +37,7 @@ struct Options {
   bool optimize = true;           // -O (default) / -O0
   bool warningsAsErrors = false;  // -Werror: front-end and GLSL warnings fail the compile
   Stage stopAfter = Stage::Emit;
+  LookupPlacement lookup;  // --lookup-set / --lookup-binding-base (emit/lookup_interface.h)
   std::set<OutputKind> engineOutputs;  // any of Hlsl, Msl, CppHeader (emit/cross_outputs.h, emit/cpp_header.h)
 };
 

@@ -194,7 +194,7 @@ float shadowc_vssmVisibility(ivec4 rect, float d) {
   return shadowc_unit((l * shadowc_aVsmArea + shadowc_aLitArea + l1 * shadowc_aPcfArea) / total);
 }
 
-float shadowc_vssm(ShadowcReceiver r) {
+float shadowc_vssm(shadowc_Receiver r) {
   float zb = shadowc_vssmBlocker(shadowc_kernelRect(r.texel, shadowc_searchTexels(r)), r.d); SHADOWC_NAIVE_VSSM_RETURN(zb)
   if (zb < 0.0) return 1.0;  // no blocker in the search region
 #if SHADOWC_KERNEL_PENUMBRA
