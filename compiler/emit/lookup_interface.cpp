@@ -65,7 +65,7 @@ bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, Looku
   body = stripLineDirectives(body);
   while (!body.empty() && body.front() == '\n') body.erase(body.begin());
   out.frameBlock =
-      "// The frame block; define SHADOWC_FRAME_EXTERNAL before the #include to supply\n"
+      "// The frame block; define SHADOWC_FRAME_EXTERNAL before including this file to supply\n"
       "// shadowc_Frame shadowc_frame() from your own data instead (docs/integration.md).\n"
       "#ifndef SHADOWC_FRAME_EXTERNAL\n" +
       body + (body.ends_with("\n") ? "" : "\n") + "#endif\n";
