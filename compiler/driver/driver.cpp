@@ -11,6 +11,7 @@
 #include "emit/filter_emitter.h"
 #include "emit/output_writer.h"
 #include "plan/planner.h"
+#include "spec/print_filter.h"
 
 namespace shadowc::driver {
 namespace {
@@ -24,9 +25,13 @@ std::string locatedError(const FilterSpec& spec, const std::string& message) {
 
 // A spec built in code re-enters the pipeline here. The checker's spec validation (spec
 // printer + check, engineer B) replaces the body: `return loadFilterSource(printSpec(spec), ...)`.
+// A spec built in code is valid when the checker accepts its printed description
+// (spec/print_filter.h): one checker decides for text and for code alike. The errors then point
+// into the printed text, which the log shows. The caller's spec itself is compiled (it may carry
+// the debug-only naiveUnguarded, which the language cannot express).
 LoadResult checkBuiltSpec(const FilterSpec& spec) {
-  LoadResult checked;
-  checked.spec = spec;
+  LoadResult checked = loadFilterSource(printFilter(spec), spec.name + ".shadow");
+  if (checked.spec) checked.spec = spec;
   return checked;
 }
 

@@ -40,32 +40,6 @@ void DiagnosticSink::suggest(const std::string& suggestion) {
   if (lastKept_ && !suggestion.empty()) out_.back().suggestion = "did you mean '" + suggestion + "'?";
 }
 
-int editDistance(std::string_view a, std::string_view b) {
-  std::vector<int> prev(b.size() + 1), cur(b.size() + 1);
-  for (size_t j = 0; j <= b.size(); ++j) prev[j] = static_cast<int>(j);
-  for (size_t i = 1; i <= a.size(); ++i) {
-    cur[0] = static_cast<int>(i);
-    for (size_t j = 1; j <= b.size(); ++j) {
-      const int subst = prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
-      cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, subst});
-    }
-    std::swap(prev, cur);
-  }
-  return prev[b.size()];
-}
-
-std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates) {
-  // A typo changes about one character in three; further than that it is another word.
-  const int limit = std::max(1, static_cast<int>(word.size()) / 3);
-  std::string_view best;
-  int bestDistance = limit + 1;
-  for (std::string_view c : candidates) {
-    const int d = editDistance(word, c);
-    if (d < bestDistance) bestDistance = d, best = c;
-  }
-  return std::string(best);
-}
-
 }  // namespace shadowc::dsl
 
 namespace shadowc {
@@ -126,16 +100,16 @@ void appendSnippet(std::string& out, std::string_view source, const Diagnostic& 
 }
 }  // namespace
 
-std::string formatDiagnostics(const LoadResult& result) {
+std::string formatDiagnostics(const std::vector<Diagnostic>& diagnostics, std::string_view source) {
   std::string out;
   int errors = 0, warnings = 0;
-  for (const Diagnostic& d : result.diagnostics) {
+  for (const Diagnostic& d : diagnostics) {
     if (d.severity == Severity::Error) ++errors;
     if (d.severity == Severity::Warning) ++warnings;
     std::string where = d.location.file;
     if (d.location.line > 0) where += fmt::format(":{}:{}", d.location.line, d.location.column);
     out += fmt::format("{}: {}: {} [{}]\n", where, severityName(d.severity), d.message, d.code);
-    appendSnippet(out, result.source, d);
+    appendSnippet(out, source, d);
     if (!d.suggestion.empty()) out += "note: " + d.suggestion + "\n";
   }
   auto plural = [](int n, const char* what) { return fmt::format("{} {}{}", n, what, n == 1 ? "" : "s"); };

@@ -9,7 +9,8 @@
 #include <string_view>
 #include <vector>
 
-#include "spec/load_filter.h"
+#include "dsl/diagnostic.h"
+#include "support/suggest.h"  // closestMatch for DiagnosticSink::suggest's callers
 
 namespace shadowc::dsl {
 
@@ -39,6 +40,10 @@ class DiagnosticSink {
   void report(DiagId id, int line, int column, int length, const Args&... args) {
     emit(id, line, column, length, fmt::format(fmt::runtime(diagInfo(id).format), args...));
   }
+  // The same with the arguments already packed (table-driven callers: spec/combination_rules.cpp).
+  void vreport(DiagId id, int line, int column, int length, fmt::format_args args) {
+    emit(id, line, column, length, fmt::vformat(diagInfo(id).format, args));
+  }
   // Attaches "did you mean '...'?" to the last reported diagnostic (when it was kept).
   void suggest(const std::string& suggestion);
 
@@ -55,10 +60,5 @@ class DiagnosticSink {
   bool stopped_ = false;
   bool lastKept_ = false;
 };
-
-// Levenshtein distance (two rows, O(|a|*|b|)).
-int editDistance(std::string_view a, std::string_view b);
-// The closest candidate when it is close enough to be a plausible typo, else "".
-std::string closestMatch(std::string_view word, const std::vector<std::string_view>& candidates);
 
 }  // namespace shadowc::dsl

@@ -17,7 +17,7 @@ class Parser {
     }
     if (!isName(peek(), "filter")) {
       report(DiagId::expectedFilter, peek(), describe(peek()));
-      if (peek().kind == TokenKind::Name) sink_.suggest(closestMatch(peek().text, {"filter"}));
+      if (peek().kind == TokenKind::Name) sink_.suggest(support::closestMatch(peek().text, {"filter"}));
       // Resynchronize on the first `filter` further down, if any.
       while (peek().kind != TokenKind::End && !isName(peek(), "filter")) ++pos_;
       if (peek().kind == TokenKind::End) return file;

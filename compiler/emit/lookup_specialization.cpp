@@ -35,17 +35,20 @@ int technique(const FilterSpec& s) {
 
 int subdivisionValue(Subdivision s) {
   switch (s) {
-    case Subdivision::None: return 0;
-    case Subdivision::Uniform: return 1;
-    case Subdivision::Quadtree: return 2;
+    case Subdivision::None:
+      return 0;
+    case Subdivision::Uniform:
+      return 1;
+    case Subdivision::Quadtree:
+      return 2;
   }
   return 0;
 }
 
 std::string poissonArray(std::string_view name, int count, uint64_t seed) {
   const std::vector<std::pair<double, double>> taps = poissonDisk(count, seed);
-  std::string out = fmt::format("// {} Poisson-disk taps in the unit disk (best candidate, seed {}; pcss-blog.txt)\n",
-                                count, seed);
+  std::string out =
+      fmt::format("// {} Poisson-disk taps in the unit disk (best candidate, seed {}; pcss-blog.txt)\n", count, seed);
   out += fmt::format("const vec2 {}[{}] = vec2[](", name, count);
   for (size_t i = 0; i < taps.size(); ++i)
     out += fmt::format("{}vec2({}, {})", i ? ", " : "", glslFloat(taps[i].first), glslFloat(taps[i].second));
@@ -72,7 +75,8 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
 
   check(layers >= 1, "layers must be >= 1");
   check(!vssm || s.moments.warp == Warp::Linear, "the VSSM blocker estimate (eq. 4) needs the linear warp");
-  check(moments || s.blocker.kind != BlockerKind::Moments, "the moments blocker estimate needs a moments representation");
+  check(moments || s.blocker.kind != BlockerKind::Moments,
+        "the moments blocker estimate needs a moments representation");
   check(!vssm || layers == 1, "the VSSM path works on a single (unlayered) moments map");
   check(!(moments && s.moments.warp == Warp::PowerCdf && s.storage.sat != SatKind::None),
         "power_cdf stores min/max, which a summed-area table cannot sum");
@@ -136,11 +140,7 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
     defFloat("SHADOWC_OVERLAP", std::max(0.0, s.moments.overlap));
     defInt("SHADOWC_LAYER_BLEND", layers > 1 && s.moments.overlap > 0.0 ? 1 : 0);
     if (layers > 1 && !splitsTexture) {
-      std::vector<double> splits = s.moments.splits;
-      if (splits.size() != static_cast<size_t>(layers + 1)) {
-        splits.clear();  // unchecked spec: fall back to uniform placement
-        for (int i = 0; i <= layers; ++i) splits.push_back(static_cast<double>(i) / layers);
-      }
+      const std::vector<double>& splits = s.moments.splits;  // layers+1 after normalization
       out.generatedCode += "// Layer split depths s_0..s_N (lauritzen2008 sec. 3.4)\n";
       out.generatedCode += fmt::format("const float shadowc_splitTable[{}] = float[](", layers + 1);
       for (size_t i = 0; i < splits.size(); ++i) out.generatedCode += (i ? ", " : "") + glslFloat(splits[i]);
@@ -173,7 +173,8 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
     const bool kernelQt = s.kernel.subdivision == Subdivision::Quadtree;
     const bool blockerQt = s.blocker.subdivision == Subdivision::Quadtree;
     if (kernelQt) check(s.kernel.quadtreeHeight >= 1 && s.kernel.quadtreeHeight <= 5, "quadtree height must be 1..5");
-    if (blockerQt) check(s.blocker.quadtreeHeight >= 1 && s.blocker.quadtreeHeight <= 5, "quadtree height must be 1..5");
+    if (blockerQt)
+      check(s.blocker.quadtreeHeight >= 1 && s.blocker.quadtreeHeight <= 5, "quadtree height must be 1..5");
     if (kernelQt || blockerQt) {
       if (s.kernel.traversal == QuadtreeTraversal::Unrolled) {
         if (kernelQt)

@@ -67,7 +67,7 @@ class Planner {
 
     // moments: depth -> warped (per-layer remapped) moments.
     Defines d = momentsDefines();
-    d.emplace_back("SHADOWC_SPLITS", glslFloatArray(layerSplits(spec_)));
+    d.emplace_back("SHADOWC_SPLITS", glslFloatArray(spec_.moments.splits));
     d.emplace_back("SHADOWC_OVERLAP", glslFloat(spec_.moments.overlap));
     d.emplace_back("SHADOWC_SPLITS_FROM_IMAGE", lloyd ? "1" : "0");
     Pass& m = addPass("moments", "moments", {8, 8, 1}, {kMap, DispatchMode::Texels},
@@ -185,14 +185,6 @@ std::vector<double> blurWeights(BlurKind kind, int r) {
   for (int k = 1; k <= r; ++k) total += 2.0 * w[k];
   for (double& x : w) x /= total;
   return w;
-}
-
-std::vector<double> layerSplits(const FilterSpec& spec) {
-  const int layers = std::max(1, spec.moments.layers);
-  if (static_cast<int>(spec.moments.splits.size()) == layers + 1) return spec.moments.splits;
-  std::vector<double> s(static_cast<size_t>(layers) + 1);
-  for (int i = 0; i <= layers; ++i) s[i] = static_cast<double>(i) / layers;
-  return s;
 }
 
 PassGraph planPasses(const FilterSpec& spec) { return Planner(spec).run(); }

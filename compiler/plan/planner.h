@@ -18,10 +18,6 @@ PassGraph planPasses(const FilterSpec& spec);
 // map size; the runtime needs a map of at least 2^K texels).
 int pyramidLevels(const FilterSpec& spec);
 
-// The layer boundaries the passes fold in: spec.moments.splits when it has layers+1 entries,
-// else uniform. (Lloyd placement computes them on the GPU: lloyd pass, `splits` image.)
-std::vector<double> layerSplits(const FilterSpec& spec);
-
 // Separable blur weights w[0..r] (w[-k] = w[k], summing to 1 over [-r, r]) that the blur passes
 // fold in; the stability suite's double-precision reference uses the same weights.
 std::vector<double> blurWeights(BlurKind kind, int r);

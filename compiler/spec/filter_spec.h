@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include "dsl/source_location.h"
+
 namespace shadowc {
 
 // ---- light -------------------------------------------------------------------------------
@@ -38,24 +40,24 @@ enum class Warp {
 enum class SplitPlacement { Uniform, Explicit, Lloyd };
 struct MomentsSpec {
   Warp warp = Warp::Linear;
-  int layers = 1;                       // >= 1; layered VSM (lauritzen2008) when > 1
+  int layers = 1;  // >= 1; layered VSM (lauritzen2008) when > 1
   SplitPlacement split = SplitPlacement::Uniform;
-  std::vector<double> splits;           // layers+1 boundaries in [0,1] depth after checking
-  double overlap = 0.0;                 // delta of lauritzen2008 sec. 4, in normalized depth
-  double positiveExponent = 40.0;       // c+ for Exp/Evsm2/Evsm4
-  double negativeExponent = 5.0;        // c- for Evsm4
-  double minVariance = 1e-5;            // VSM minimum variance (per layer when layered)
-  double bleedingReduction = 0.0;       // 0 = off; else Lauritzen's linstep(amount, 1, p)
-  int lloydIterations = 8;              // for SplitPlacement::Lloyd (needs scene histogram)
+  std::vector<double> splits;      // layers+1 boundaries in [0,1] depth after checking
+  double overlap = 0.0;            // delta of lauritzen2008 sec. 4, in normalized depth
+  double positiveExponent = 40.0;  // c+ for Exp/Evsm2/Evsm4
+  double negativeExponent = 5.0;   // c- for Evsm4
+  double minVariance = 1e-5;       // VSM minimum variance (per layer when layered)
+  double bleedingReduction = 0.0;  // 0 = off; else Lauritzen's linstep(amount, 1, p)
+  int lloydIterations = 8;         // for SplitPlacement::Lloyd (needs scene histogram)
 };
 
 // ---- storage -----------------------------------------------------------------------------
 enum class StorageFormat { Fp32, Fp16, Unorm16 };
 enum class SatKind {
   None,
-  Int32,          // uint32 16.16 fixed point, wrap-around sums (Lauritzen 2007, vssm sec. 6.4)
-  Fp32Centered,   // fp32 sums of (value - 0.5): the usual precision fix
-  Fp32Naive,      // plain fp32 sums: kept only so the stability suite can show it failing
+  Int32,         // uint32 16.16 fixed point, wrap-around sums (Lauritzen 2007, vssm sec. 6.4)
+  Fp32Centered,  // fp32 sums of (value - 0.5): the usual precision fix
+  Fp32Naive,     // plain fp32 sums: kept only so the stability suite can show it failing
 };
 struct StorageSpec {
   StorageFormat format = StorageFormat::Fp32;
@@ -80,7 +82,7 @@ enum class SamplePattern { Grid, Poisson };
 enum class Subdivision { None, Uniform, Quadtree };
 struct BlockerSpec {
   BlockerKind kind = BlockerKind::None;
-  int taps = 16;                              // Search: number of taps
+  int taps = 16;  // Search: number of taps
   SamplePattern pattern = SamplePattern::Poisson;
   Subdivision subdivision = Subdivision::Uniform;  // Moments: paper's mixed scheme uses m = 5
   int uniformM = 5;
@@ -90,15 +92,19 @@ struct BlockerSpec {
 // ---- kernel ------------------------------------------------------------------------------
 enum class KernelSize { Fixed, Penumbra };
 enum class QuadtreeTraversal { Table, Unrolled };  // Algorithm 2 via Next/Child tables
+// The one range of quadtree heights (kernel and blocker): the checker rejects others (E0314),
+// so the lookup specialization and the table builder may assert it.
+inline constexpr int kMinQuadtreeHeight = 1;
+inline constexpr int kMaxQuadtreeHeight = 5;
 struct KernelSpec {
   KernelSize size = KernelSize::Penumbra;
-  int fixedTexels = 3;                       // Fixed: kernel width in texels (odd)
+  int fixedTexels = 3;  // Fixed: kernel width in texels (odd)
   Subdivision subdivision = Subdivision::None;
-  int uniformN = 8;                          // Uniform n x n (vssm sec. 5.2)
-  int quadtreeHeight = 3;                    // Quadtree of height H (vssm sec. 5.3)
+  int uniformN = 8;        // Uniform n x n (vssm sec. 5.2)
+  int quadtreeHeight = 3;  // Quadtree of height H (vssm sec. 5.3)
   QuadtreeTraversal traversal = QuadtreeTraversal::Table;
-  double maxTexels = 64;                     // clamp of penumbra-driven kernel width
-  double litThreshold = 1e-4;                // Algorithm 2 "Threshold" (vssm sec. 6.5)
+  double maxTexels = 64;       // clamp of penumbra-driven kernel width
+  double litThreshold = 1e-4;  // Algorithm 2 "Threshold" (vssm sec. 6.5)
 };
 
 // ---- sampling (depth representation) -----------------------------------------------------
@@ -106,8 +112,8 @@ enum class PcfPattern { Grid, Bilinear, Poisson };
 enum class Rotation { None, Stable };  // stable per world position (pcss-blog.txt)
 struct SamplingSpec {
   PcfPattern pattern = PcfPattern::Grid;
-  int gridN = 3;        // Grid/Bilinear: n x n
-  int taps = 16;        // Poisson: k taps
+  int gridN = 3;  // Grid/Bilinear: n x n
+  int taps = 16;  // Poisson: k taps
   Rotation rotation = Rotation::Stable;
 };
 
@@ -115,7 +121,7 @@ struct SamplingSpec {
 enum class BiasKind { Constant, SlopeScaled, NormalOffset };
 struct BiasSpec {
   BiasKind kind = BiasKind::Constant;
-  double constant = 1e-3;   // Constant: b; SlopeScaled: max(slope*(1 - N.L), constant)
+  double constant = 1e-3;  // Constant: b; SlopeScaled: max(slope*(1 - N.L), constant)
   double slope = 5e-3;
   double normalOffset = 0;  // NormalOffset: world units along N, scaled by texel size
 };
@@ -127,11 +133,6 @@ struct ContactSpec {
   bool enabled = false;  // vssm sec. 6.4: |z_avg - d| < epsilon -> n x n PCF
   int n = 3;
   double epsilon = 0.01;
-};
-
-struct SourceLocation {
-  std::string file;
-  int line = 0, column = 0;
 };
 
 struct FilterSpec {

@@ -39,6 +39,8 @@ void sortByLocation(std::vector<Diagnostic>& diagnostics) {
 }
 }  // namespace
 
+std::string formatDiagnostics(const LoadResult& result) { return formatDiagnostics(result.diagnostics, result.source); }
+
 int LoadResult::errorCount() const {
   int n = 0;
   for (const Diagnostic& d : diagnostics) n += d.severity == Severity::Error;

@@ -2,26 +2,15 @@
 // Implemented by dsl/ (lexer, parser), spec/ (checker, normalization) and dsl/diagnostics.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
+#include "dsl/diagnostic.h"
 #include "spec/filter_spec.h"
 
 namespace shadowc {
-
-enum class Severity { Error, Warning, Note };
-
-struct Diagnostic {
-  Severity severity = Severity::Error;
-  std::string code;        // stable code from the diagnostics table, e.g. "E0102"
-  SourceLocation location; // file, 1-based line and column (0:0 = the whole file)
-  int length = 1;          // bytes the caret line underlines (^~~~)
-  std::string message;
-  std::string suggestion;  // "did you mean 'quadtree'?" or empty
-};
 
 struct LoadOptions {
   bool warningsAsErrors = false;  // -Werror
@@ -30,7 +19,7 @@ struct LoadOptions {
 struct LoadResult {
   std::optional<FilterSpec> spec;  // set only when there is no error
   std::vector<Diagnostic> diagnostics;
-  std::string source;              // the text that was read (for carets)
+  std::string source;  // the text that was read (for carets)
   int errorCount() const;
   int warningCount() const;
 };
@@ -38,8 +27,7 @@ struct LoadResult {
 LoadResult loadFilterSource(const std::string& text, const std::string& fileName, const LoadOptions& = {});
 LoadResult loadFilterFile(const std::string& path, const LoadOptions& = {});  // missing file -> one error
 
-// glslc form: "file:line:col: error: message [code]", the source line, a caret line, a
-// suggestion line when present; then "N errors generated." (and warnings) when any.
+// formatDiagnostics(result.diagnostics, result.source) (dsl/diagnostic.h).
 std::string formatDiagnostics(const LoadResult& result);
 
 // The normalized spec as JSON (fixed key order; every field explicit). Used by --print-spec

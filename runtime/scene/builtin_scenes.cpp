@@ -12,7 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "runtime/scene/scene.h"
-#include "runtime/scene/suggest.h"
+#include "support/suggest.h"
 
 namespace shadowc::rt {
 namespace {
@@ -186,7 +186,7 @@ Scene loadScene(const std::string& nameOrPath) {
   const std::filesystem::path path(nameOrPath);
   const bool looksLikePath = path.has_extension() || nameOrPath.find('/') != std::string::npos;
   if (!looksLikePath) {
-    const std::string near = closestMatch(nameOrPath, builtinSceneNames());
+    const std::string near = support::closestMatch(nameOrPath, builtinSceneNames());
     throw SceneError(fmt::format("unknown scene '{}'{} (built-in scenes: {}; or give a path to a .json file)",
                                  nameOrPath, near.empty() ? "" : fmt::format(", did you mean '{}'?", near),
                                  fmt::join(builtinSceneNames(), ", ")));

@@ -12,7 +12,7 @@
 #include "runtime/scene/mesh_loader.h"
 #include "runtime/scene/scene.h"
 #include "runtime/scene/scene_geometry.h"
-#include "runtime/scene/suggest.h"
+#include "support/suggest.h"
 
 namespace shadowc::rt {
 namespace {
@@ -54,7 +54,7 @@ class Reader {
   void checkKeys(const json& j, const std::string& path, const std::vector<std::string>& allowed) const {
     for (const auto& [key, value] : j.items()) {
       if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
-      const std::string near = closestMatch(key, allowed);
+      const std::string near = support::closestMatch(key, allowed);
       fail(join(path, key), near.empty() ? fmt::format("unknown field (expected one of: {})", fmt::join(allowed, ", "))
                                          : fmt::format("unknown field (did you mean '{}'?)", near));
     }
@@ -153,7 +153,7 @@ AreaLight readLight(const Reader& r, const json& j) {
     } else if (shape == "disk") {
       l.shape = LightShape::Disk;
     } else {
-      const std::string near = closestMatch(shape, {"rect", "disk"});
+      const std::string near = support::closestMatch(shape, {"rect", "disk"});
       r.fail(p + ".shape", fmt::format("unknown shape '{}' (expected rect or disk{})", shape,
                                        near.empty() ? "" : fmt::format("; did you mean '{}'?", near)));
     }
@@ -221,7 +221,7 @@ Mesh readObject(const Reader& r, const json& j, const std::string& p, size_t ind
       r.fail(p + ".path", e.what());
     }
   } else {
-    const std::string near = closestMatch(type, types);
+    const std::string near = support::closestMatch(type, types);
     r.fail(p + ".type", fmt::format("unknown object type '{}' (expected plane, box, sphere or mesh{})", type,
                                     near.empty() ? "" : fmt::format("; did you mean '{}'?", near)));
   }

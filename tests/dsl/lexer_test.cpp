@@ -7,6 +7,7 @@
 
 #include "dsl/diagnostics.h"
 #include "dsl/parser.h"
+#include "spec/load_filter.h"
 
 using namespace shadowc;
 using namespace shadowc::dsl;
@@ -125,10 +126,15 @@ TEST(Parser, RecoversAtTheNextLine) {
 }
 
 TEST(Diagnostics, EditDistanceAndSuggestions) {
-  EXPECT_EQ(editDistance("quadtre", "quadtree"), 1);
-  EXPECT_EQ(editDistance("kitten", "sitting"), 3);
-  EXPECT_EQ(closestMatch("quadtre", {"fixed", "penumbra", "uniform", "quadtree"}), "quadtree");
-  EXPECT_EQ(closestMatch("xyz", {"fixed", "penumbra"}), "");
+  EXPECT_EQ(support::editDistance("quadtre", "quadtree"), 1u);
+  EXPECT_EQ(support::editDistance("kitten", "sitting"), 3u);
+  EXPECT_EQ(support::closestMatch("quadtre", {"fixed", "penumbra", "uniform", "quadtree"}), "quadtree");
+  EXPECT_EQ(support::closestMatch("xyz", {"fixed", "penumbra"}), "");
+  // One suggester for the language and the scene loader: case-insensitive, at most |word|/3 edits.
+  EXPECT_EQ(support::closestMatch("Quadtree", {"uniform", "quadtree"}), "quadtree");
+  EXPECT_EQ(support::closestMatch("sise", std::vector<std::string>{"type", "size"}), "size");
+  EXPECT_EQ(support::closestMatch("pxnxmbra", {"penumbra"}), "penumbra");  // 2 edits of 8: a typo
+  EXPECT_EQ(support::closestMatch("pxnxmxra", {"penumbra"}), "");          // 3 edits of 8: another word
 }
 
 TEST(Diagnostics, CodesAreUniqueAndGrouped) {

@@ -128,7 +128,7 @@ std::vector<Variant> variants() {
     s.moments.overlap = 0.0;
     v.push_back({"layered_lloyd", s});
     s.moments.split = SplitPlacement::Uniform;
-    s.moments.splits.clear();
+    s.moments.splits = {0.0, 0.25, 0.5, 0.75, 1.0};  // uniform, as normalization writes it
     s.moments.overlap = 0.01;
     s.moments.warp = Warp::PowerCdf;
     v.push_back({"power_cdf_layered", s});
@@ -189,7 +189,8 @@ std::string preprocessed(const Variant& v) {
   SpirvResult r = preprocessGlsl(shadeSource(v.spec), ShaderStage::Compute, v.name + ".comp", resolveTemplate, out);
   EXPECT_TRUE(r.ok) << v.name << ":\n" << r.log;
   // Debug aid: SHADOWC_LOOKUP_DUMP=<dir> writes every preprocessed variant there.
-  if (const char* dir = std::getenv("SHADOWC_LOOKUP_DUMP")) std::ofstream(std::string(dir) + "/" + v.name + ".comp") << out;
+  if (const char* dir = std::getenv("SHADOWC_LOOKUP_DUMP"))
+    std::ofstream(std::string(dir) + "/" + v.name + ".comp") << out;
   return out;
 }
 
@@ -253,8 +254,10 @@ TEST(LookupCompileChecks, UnrolledQuadtreeHasNoLoopInItsTraversal) {
   EXPECT_EQ(pre.find("shadowc_qtChild"), std::string::npos);
   // 85 nodes for H = 3: 21 internal visits and 64 leaves.
   size_t visits = 0, leaves = 0;
-  for (size_t p = body.find("shadowc_qtVisit("); p != std::string::npos; p = body.find("shadowc_qtVisit(", p + 1)) ++visits;
-  for (size_t p = body.find("shadowc_qtLeaf("); p != std::string::npos; p = body.find("shadowc_qtLeaf(", p + 1)) ++leaves;
+  for (size_t p = body.find("shadowc_qtVisit("); p != std::string::npos; p = body.find("shadowc_qtVisit(", p + 1))
+    ++visits;
+  for (size_t p = body.find("shadowc_qtLeaf("); p != std::string::npos; p = body.find("shadowc_qtLeaf(", p + 1))
+    ++leaves;
   EXPECT_EQ(visits, 21u);
   EXPECT_EQ(leaves, 64u);
 }

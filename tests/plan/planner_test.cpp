@@ -144,12 +144,6 @@ TEST(Planner, PyramidLevelsCoverTheWidestKernel) {
   EXPECT_EQ(pyramidLevels(s), 13);  // clamped
 }
 
-TEST(Planner, UniformSplitsWhenTheSpecHasNone) {
-  FilterSpec s;
-  s.moments.layers = 4;
-  EXPECT_EQ(layerSplits(s), (std::vector<double>{0.0, 0.25, 0.5, 0.75, 1.0}));
-}
-
 }  // namespace
 }  // namespace shadowc
 

@@ -89,7 +89,7 @@ TEST(Precision, BothSidesOfTheFp16Boundary) {
 }
 
 TEST(Precision, BothSidesOfTheSatBoundaryDependOnMapSize) {
-  const std::string sat = "\nstorage sat(fp32_centered)\nblocker moments\nkernel uniform(4)";
+  const std::string sat = "\nstorage sat(fp32_centered)\nkernel fixed(5)";             // VSSM needs linear (E0417)
   EXPECT_EQ(codes("moments exp(exponent: 34)" + sat), Codes{});                        // 2048: limit 34.38
   EXPECT_EQ(codes("moments exp(exponent: 34)\nmap_size 4096" + sat), Codes{"E0404"});  // 4096: 33.68
   EXPECT_EQ(codes("moments exp(exponent: 35)" + sat), Codes{"E0404"});
@@ -102,7 +102,7 @@ TEST(Combinations, Int32SatBoxLimit) {
 }
 
 TEST(Combinations, WerrorTurnsWarningsIntoErrors) {
-  const std::string body = "moments linear\nstorage sat(int32)\nblocker moments\nkernel quadtree(0)";
+  const std::string body = "moments linear\nstorage sat(fp32)";
   LoadOptions o;
   const LoadResult warn = loadFilterSource("filter t {\n" + body + "\n}\n", "t");
   EXPECT_EQ(warn.errorCount(), 0);
@@ -111,13 +111,13 @@ TEST(Combinations, WerrorTurnsWarningsIntoErrors) {
   o.warningsAsErrors = true;
   const LoadResult err = loadFilterSource("filter t {\n" + body + "\n}\n", "t", o);
   EXPECT_EQ(err.errorCount(), 1);
-  EXPECT_EQ(err.diagnostics[0].code, "W0502");  // the code stays; the severity changes
+  EXPECT_EQ(err.diagnostics[0].code, "W0504");  // the code stays; the severity changes
   EXPECT_FALSE(err.spec);
 }
 
 TEST(SpecJson, FixedKeyOrderAndEveryField) {
   const nlohmann::ordered_json j =
-      specToJson(load("moments linear(layers: 2)\nstorage sat(int32)\nblocker moments"
+      specToJson(load("moments linear\nstorage sat(int32)\nblocker moments"
                       "\nkernel quadtree(3)"));
   std::vector<std::string> keys;
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
@@ -128,7 +128,7 @@ TEST(SpecJson, FixedKeyOrderAndEveryField) {
   EXPECT_EQ(j["moments"].size(), 10u);
   EXPECT_EQ(j["kernel"].size(), 8u);
   EXPECT_EQ(j["blocker"].size(), 6u);
-  EXPECT_EQ(j["moments"]["splits"].dump(), "[0.0,0.5,1.0]");
+  EXPECT_EQ(j["moments"]["splits"].dump(), "[0.0,1.0]");  // VSSM is one layer (E0418)
   EXPECT_EQ(j["kernel"]["subdivision"], "quadtree");
   EXPECT_EQ(j["storage"]["sat"], "int32");
 }

@@ -30,6 +30,12 @@ TEST_P(Sample, LoadsCleanly) {
   ASSERT_TRUE(r.spec.has_value());
   EXPECT_EQ(r.spec->name, GetParam()) << "the filter is named after its file";
   EXPECT_EQ(text.rfind("#", 0), 0u) << "every sample starts with a comment saying what it is";
+  // Normalization's contract: layers+1 split boundaries from 0 to 1, so nobody downstream
+  // needs a fallback (planner, lookup, stability reference read spec.moments.splits).
+  const std::vector<double>& splits = r.spec->moments.splits;
+  ASSERT_EQ(splits.size(), static_cast<size_t>(r.spec->moments.layers + 1));
+  EXPECT_EQ(splits.front(), 0.0);
+  EXPECT_EQ(splits.back(), 1.0);
   std::smatch m;
   if (std::regex_search(text, m, std::regex(R"(# expect: (W\d{4}) at (\d+):(\d+))"))) {
     ASSERT_EQ(r.warningCount(), 1) << formatDiagnostics(r);

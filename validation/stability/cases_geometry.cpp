@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "driver/driver.h"
+#include "spec/load_filter.h"
 #include "validation/stability/case_support.h"
 
 namespace shadowc::validation {
@@ -114,27 +114,32 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
                            }));
   }
 
-  // Height 0 passes the checker with W0502 but the lookup accepts 1..5: the emitter must reject
-  // it with a message (never emit a broken shader).
+  // Heights outside 1..5 (filter_spec.h kMinQuadtreeHeight..kMaxQuadtreeHeight) are the checker's error E0314 with
+  // a caret at the height: `shadowc check` rejects what the emitter cannot build (issue 8).
   {
     StabilityCase c =
-        makeCase("quadtree_height_0_rejected", "height 0: rejected with a message", {}, isVssm,
-                 [](SuiteContext&, const FilterSpec& s) {
+        makeCase("quadtree_height_0_rejected", "height 0: the checker rejects it (E0314 at the height)", {}, isVssm,
+                 [](SuiteContext&, const FilterSpec&) {
                    CaseResult r;
+                   r.filter = "vssm_quadtree_h0";
                    r.bound = 0;
-                   r.boundReason = "rejection expected";
-                   FilterSpec z = s;
-                   z.kernel.quadtreeHeight = 0;
-                   z.kernel.subdivision = Subdivision::Quadtree;
-                   const driver::Result e = driver::compileSpec(z);
-                   r.worstError = e.ok ? 1.0 : 0.0;
-                   r.detail = e.ok ? "height 0 compiled (expected a rejection)" : "rejected: " + e.log.substr(0, 160);
+                   r.boundReason = "rejection by the checker expected";
+                   const std::string text =
+                       "filter vssm_quadtree_h0 {\nmoments linear\nstorage sat(int32)\nblocker moments\n"
+                       "kernel quadtree(height: 0)\nfallback pcf(2x2)\n}\n";
+                   const LoadResult l = loadFilterSource(text, "vssm_quadtree_h0.shadow");
+                   const bool rejected = !l.spec && !l.diagnostics.empty() && l.diagnostics[0].code == "E0314" &&
+                                         l.diagnostics[0].location.line == 5 && l.diagnostics[0].location.column == 25;
+                   r.worstError = rejected ? 0.0 : 1.0;
+                   r.detail = rejected ? "rejected: " + l.diagnostics[0].code + " at 5:25 (the height)"
+                                       : "expected E0314 at 5:25, got: " + formatDiagnostics(l).substr(0, 160);
                    settle(r);
                    return r;
                  });
+    // The case runs once, on a valid neighbour (height 1); it never compiles its own filter.
     c.filters = {libraryFilter(
-        "vssm_quadtree_h0",
-        "moments linear\nstorage sat(int32)\nblocker moments\nkernel quadtree(height: 0)\nfallback pcf(2x2)")};
+        "vssm_quadtree_h1",
+        "moments linear\nstorage sat(int32)\nblocker moments\nkernel quadtree(height: 1)\nfallback pcf(2x2)")};
     out.push_back(std::move(c));
   }
 

@@ -132,7 +132,7 @@ class Evaluator {
     }
     return 0;
   }
-  double split(int i) const { return s_.moments.layers > 1 ? splits_[i] : (i == 0 ? 0.0 : 1.0); }
+  double split(int i) const { return s_.moments.splits[i]; }
   std::array<double, 2> layerRange(int i) const {
     if (s_.moments.layers == 1) return {0.0, 1.0};
     return {split(i) - s_.moments.overlap, split(i + 1) + s_.moments.overlap};
@@ -308,7 +308,6 @@ class Evaluator {
   const DepthMap& map_;
   LightFrame light_;
   double scale_;
-  std::vector<double> splits_ = layerSplits(s_);
   const MomentsField* field_;
 };
 
@@ -338,7 +337,7 @@ std::vector<double> warpMoments(const FilterSpec& s, double d) {
 MomentsField::MomentsField(const FilterSpec& s, const DepthMap& map) : size(map.size), layers(s.moments.layers) {
   const size_t n = size_t(size) * size;
   raw_.assign(n * layers * 4, 0.0);
-  const auto splits = layerSplits(s);
+  const std::vector<double>& splits = s.moments.splits;
   for (int l = 0; l < layers; ++l)
     for (size_t i = 0; i < n; ++i) {
       double d = map.depth[i];

@@ -66,9 +66,9 @@ Fix: layer j with s_j <= d < s_{j+1} (first/last layer beyond the range), the wa
 **Kernels at the border, larger than the map, of one texel; quadtree leaves of one texel**
 (vssm-yang2010 sec. 5.2-5.3). Fix: kernel rectangles are clamped to the map in integer texels,
 widths are clamped to [1, max] NaN-safely, sub-kernel rectangles partition the root exactly with
-integer arithmetic and an empty one is skipped. Quadtree height 0 passes the checker with a
-warning (W0502) but the lookup specialization accepts heights 1..5 only, so the emitter rejects
-it with a message (tested).
+integer arithmetic and an empty one is skipped. Quadtree heights outside 1..5 are the checker's
+error E0314, with a caret at the height, so `shadowc check` rejects what the emitter cannot build
+(tested).
 
 **Depth ranges and grazing light.** Depth ranges from 1e-3 to 1e4 world units and N.L -> 0
 must not produce NaN: the receiver depth is computed in normalized form, the slope-scaled bias

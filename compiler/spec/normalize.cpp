@@ -1,0 +1,58 @@
+// Normalization (checker phase 2): defaults that depend on other settings; docs/dsl.md lists them.
+#include "spec/normalize.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "spec/precision.h"
+
+namespace shadowc::spec {
+
+void normalize(FilterSpec& spec, const SettingsRead& given) {
+  MomentsSpec& m = spec.moments;
+  const bool moments = spec.representation == Representation::Moments;
+  if (!moments) m.layers = 1;
+  // Kernel: penumbra-driven when there is a blocker estimate; otherwise a fixed region that
+  // matches the PCF sampling (grid/bilinear NxN -> N rounded up to odd, Poisson -> 5, none -> 1).
+  if (!given.kernel) {
+    KernelSpec& k = spec.kernel;
+    k.subdivision = Subdivision::None;
+    if (spec.blocker.kind != BlockerKind::None) {
+      k.size = KernelSize::Penumbra;
+    } else {
+      k.size = KernelSize::Fixed;
+      int w = 1;
+      if (given.sampling && spec.sampling.pattern != PcfPattern::Poisson) w = spec.sampling.gridN | 1;
+      if (given.sampling && spec.sampling.pattern == PcfPattern::Poisson) w = 5;
+      k.fixedTexels = w;
+    }
+  }
+  // Sampling (depth representation): a fixed kernel of W texels is sampled W x W; a penumbra
+  // kernel with Poisson taps and stable rotation (pcss-blog.txt).
+  if (!given.sampling && !moments) {
+    if (spec.kernel.size == KernelSize::Fixed)
+      spec.sampling = SamplingSpec{PcfPattern::Grid, spec.kernel.fixedTexels, 16, Rotation::Stable};
+    else
+      spec.sampling = SamplingSpec{PcfPattern::Poisson, 3, 16, Rotation::Stable};
+  }
+  // Exponents: the default is the largest safe one for the storage, at most 40 / 5.
+  const ExponentLimit limit = warpExponentLimit(spec.storage, spec.mapSize);
+  const double safe = std::floor(limit.maxExponent * 10.0) / 10.0;
+  const bool exponential = moments && (m.warp == Warp::Exp || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4);
+  if (!given.exponent && exponential) m.positiveExponent = std::min(40.0, safe);
+  if (!given.negativeExponent && exponential) m.negativeExponent = std::min(5.0, safe);
+  // fp16 moments need a larger variance floor (vsm-tutorial: variance = max(variance, 0.0005)).
+  if (!given.minVariance && moments && spec.storage.format == StorageFormat::Fp16 && spec.storage.sat == SatKind::None)
+    m.minVariance = 5e-4;
+  // Splits: layers+1 boundaries in [0,1]. Lloyd starts uniform; the planner refines them with
+  // the scene's depth histogram (lauritzen2008 sec. 4.1).
+  if (m.split == SplitPlacement::Explicit && given.explicitOk) {
+    m.splits = given.explicitSplits;
+  } else {
+    m.splits.clear();
+    for (int i = 0; i <= m.layers; ++i) m.splits.push_back(static_cast<double>(i) / m.layers);
+  }
+  if (spec.prefilter.blur == BlurKind::None) spec.prefilter.blurRadius = 0;
+}
+
+}  // namespace shadowc::spec

@@ -1,0 +1,603 @@
+// Checker phase 1, reading settings: each setting's value and arguments, typed and
+// range-checked (E03xx), unknown names with an edit-distance suggestion, duplicates with a note
+// at the first one. Nothing here depends on another setting (normalize.cpp and
+// combination_rules.cpp do that), so the order of settings in a file never matters.
+#include "spec/read_settings.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+
+namespace shadowc::spec {
+namespace {
+
+using dsl::Argument;
+using dsl::DiagId;
+using dsl::Setting;
+using dsl::Value;
+using Names = std::vector<std::string_view>;
+
+std::string join(const Names& names) {
+  std::string out;
+  for (std::string_view n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+  return out;
+}
+
+std::string describeValue(const Value& v) {
+  switch (v.kind) {
+    case Value::Kind::Number:
+      return "number '" + v.text + "'";
+    case Value::Kind::Size:
+      return "size '" + v.text + "'";
+    case Value::Kind::Name:
+      return "name '" + v.text + (v.hasArguments ? "(...)'" : "'");
+  }
+  return "'" + v.text + "'";
+}
+
+struct Range {
+  double lo, hi;
+  bool loOpen = false, hiOpen = false;
+  std::string text() const { return fmt::format("in {}{}, {}{}", loOpen ? "(" : "[", lo, hi, hiOpen ? ")" : "]"); }
+  bool contains(double v) const { return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi); }
+};
+
+struct Param {
+  std::string_view name;
+  bool positional = false;
+};
+using Bound = std::map<std::string_view, const Value*>;
+
+const Names kSettings = {"light",    "depth", "moments",  "storage", "blur",      "mips",     "blocker", "kernel",
+                         "sampling", "bias",  "fallback", "contact", "early_out", "bleeding", "map_size"};
+
+class SettingsReader {
+ public:
+  SettingsReader(const dsl::FilterDecl& f, dsl::DiagnosticSink& sink) : f_(f), sink_(sink) {}
+
+  SettingsRead run() {
+    out_.spec.name = f_.name;
+    out_.spec.location = SourceLocation{sink_.file(), f_.line, f_.column};
+    std::map<std::string_view, const Setting*> seen;
+    for (const Setting& s : f_.settings) {
+      if (sink_.stopped()) break;
+      auto known = std::find(kSettings.begin(), kSettings.end(), s.keyword);
+      if (known == kSettings.end()) {
+        sink_.report(DiagId::unknownSetting, s.line, s.column, static_cast<int>(s.keyword.size()), s.keyword);
+        sink_.suggest(support::closestMatch(s.keyword, kSettings));
+        continue;
+      }
+      // `depth` and `moments` are the two spellings of one axis: the representation.
+      const bool isRepresentation = s.keyword == "depth" || s.keyword == "moments";
+      const std::string_view group = isRepresentation ? std::string_view("representation") : *known;
+      if (const Setting* first = seen[group]) {
+        const std::string label = isRepresentation && first->keyword != s.keyword
+                                      ? "representation ('" + first->keyword + "' or '" + s.keyword + "')"
+                                      : s.keyword;
+        sink_.report(DiagId::duplicateSetting, s.line, s.column, static_cast<int>(s.keyword.size()), label,
+                     first->line);
+        sink_.report(DiagId::firstSetHere, first->line, first->column, static_cast<int>(first->keyword.size()),
+                     first->keyword);
+        continue;
+      }
+      seen[group] = &s;
+      if (std::binary_search(f_.badLines.begin(), f_.badLines.end(), s.line)) continue;  // already reported
+      if (!s.hasValue && s.keyword != "depth") {
+        sink_.report(DiagId::missingValue, s.line, s.column, static_cast<int>(s.keyword.size()), s.keyword);
+        continue;
+      }
+      read(s);
+    }
+    return std::move(out_);
+  }
+
+ private:
+  // ---- reporting helpers ---------------------------------------------------------------------
+  template <typename... Args>
+  void at(const Value& v, DiagId id, const Args&... args) {
+    sink_.report(id, v.line, v.column, v.length, args...);
+  }
+  // ---- typed readers ---------------------------------------------------------------------------
+  // Index of v's name in `options` (v may carry arguments), or nullopt after a diagnostic.
+  std::optional<size_t> variant(const Value& v, const std::string& what, const Names& options) {
+    if (v.kind != Value::Kind::Name) {
+      at(v, DiagId::wrongType, what, "one of: " + join(options), describeValue(v));
+      return std::nullopt;
+    }
+    auto it = std::find(options.begin(), options.end(), v.text);
+    if (it == options.end()) {
+      at(v, DiagId::unknownValue, v.text, what, join(options));
+      sink_.suggest(support::closestMatch(v.text, options));
+      return std::nullopt;
+    }
+    return static_cast<size_t>(it - options.begin());
+  }
+  // Like variant() for a plain enum value: arguments are an error.
+  std::optional<size_t> choice(const Value* v, const std::string& what, const Names& options) {
+    auto idx = variant(*v, what, options);
+    if (idx && v->hasArguments) {
+      at(*v, DiagId::takesNoArguments, v->text);
+      return std::nullopt;
+    }
+    return idx;
+  }
+  std::optional<double> number(const Value* v, const std::string& what, const Range& r,
+                               const std::string& rangeText = "") {
+    if (v->kind != Value::Kind::Number) {
+      at(*v, DiagId::wrongType, what, "a number", describeValue(*v));
+      return std::nullopt;
+    }
+    if (!r.contains(v->number)) {
+      at(*v, DiagId::outOfRange, what, rangeText.empty() ? r.text() : rangeText, v->text);
+      return std::nullopt;
+    }
+    return v->number;
+  }
+  std::optional<int> integer(const Value* v, const std::string& what, int lo, int hi,
+                             const std::string& rangeText = "") {
+    if (v->kind == Value::Kind::Number && !v->integer && v->number != std::floor(v->number)) {
+      at(*v, DiagId::notInteger, what, v->text);
+      return std::nullopt;
+    }
+    auto n = number(v, what, Range{double(lo), double(hi)}, rangeText);
+    if (!n) return std::nullopt;
+    return static_cast<int>(*n);
+  }
+  std::optional<int> squareSize(const Value* v, const std::string& what, int lo, int hi) {
+    if (v->kind != Value::Kind::Size) {
+      at(*v, DiagId::wrongType, what, "a size NxN such as 3x3", describeValue(*v));
+      return std::nullopt;
+    }
+    if (v->width != v->height) {
+      at(*v, DiagId::sizeNotSquare, what, v->width, v->height);
+      return std::nullopt;
+    }
+    if (v->width < lo || v->width > hi) {
+      at(*v, DiagId::outOfRange, what, fmt::format("NxN with N in [{}, {}]", lo, hi), v->text);
+      return std::nullopt;
+    }
+    return v->width;
+  }
+
+  // One range for every quadtree height (kernel and blocker walks, Next/Child tables, unrolled
+  // traversal): height 0 would be a single box query (that is 'kernel penumbra'), and height 6
+  // has 5461 nodes, past what a constant table or an unrolled walk should fold in.
+  std::optional<int> quadtreeHeight(const Value* v, const std::string& what) {
+    if (v->kind == Value::Kind::Number && v->number == std::floor(v->number) &&
+        (v->number < kMinQuadtreeHeight || v->number > kMaxQuadtreeHeight)) {
+      at(*v, DiagId::quadtreeHeightRange, what, kMinQuadtreeHeight, kMaxQuadtreeHeight, v->text);
+      return std::nullopt;
+    }
+    return integer(v, what, kMinQuadtreeHeight, kMaxQuadtreeHeight);
+  }
+
+  // Binds call arguments to parameters (positional in declaration order, or by name).
+  bool bind(const Value& call, const std::vector<Param>& params, Bound& out) {
+    if (params.empty()) {
+      if (!call.arguments.empty()) {
+        at(call, DiagId::takesNoArguments, call.text);
+        return false;
+      }
+      return true;
+    }
+    Names names, positional;
+    for (const Param& p : params) {
+      names.push_back(p.name);
+      if (p.positional) positional.push_back(p.name);
+    }
+    bool ok = true;
+    size_t nextPositional = 0;
+    for (const Argument& a : call.arguments) {
+      std::string_view name;
+      if (a.name.empty()) {
+        if (nextPositional >= positional.size()) {
+          at(a.value, DiagId::tooManyArguments, call.text, positional.size());
+          ok = false;
+          continue;
+        }
+        name = positional[nextPositional++];
+      } else {
+        auto it = std::find(names.begin(), names.end(), a.name);
+        if (it == names.end()) {
+          sink_.report(DiagId::unknownArgument, a.line, a.column, static_cast<int>(a.name.size()), a.name, call.text,
+                       join(names));
+          sink_.suggest(support::closestMatch(a.name, names));
+          ok = false;
+          continue;
+        }
+        name = *it;
+      }
+      if (out.count(name)) {
+        sink_.report(DiagId::duplicateArgument, a.line, a.column,
+                     static_cast<int>(a.name.empty() ? a.value.length : a.name.size()), name, call.text);
+        ok = false;
+        continue;
+      }
+      out[name] = &a.value;
+    }
+    return ok;
+  }
+  static const Value* get(const Bound& b, std::string_view name) {
+    auto it = b.find(name);
+    return it == b.end() ? nullptr : it->second;
+  }
+  static std::string arg(std::string_view name, const Value& call) {
+    return fmt::format("'{}' of '{}'", name, call.text);
+  }
+
+  // ---- settings ----------------------------------------------------------------------------------
+  void read(const Setting& s) {
+    const Value& v = s.value;
+    const std::string what = "'" + s.keyword + "'";
+    if (s.keyword == "light")
+      out_.light = &s, readLight(v, what);
+    else if (s.keyword == "depth")
+      readDepth(s);
+    else if (s.keyword == "moments")
+      out_.representation = &s, readMoments(v, what);
+    else if (s.keyword == "storage")
+      out_.storage = &s, readStorage(v, what);
+    else if (s.keyword == "blur")
+      out_.blur = &s, readBlur(v, what);
+    else if (s.keyword == "mips") {
+      out_.mips = &s;
+      if (auto c = choice(&v, what, {"off", "on"})) out_.spec.prefilter.mips = *c == 1;
+    } else if (s.keyword == "blocker")
+      out_.blocker = &s, readBlocker(v, what);
+    else if (s.keyword == "kernel")
+      out_.kernel = &s, readKernel(v, what);
+    else if (s.keyword == "sampling")
+      out_.sampling = &s, readSampling(v, what);
+    else if (s.keyword == "bias")
+      readBias(v, what);
+    else if (s.keyword == "fallback")
+      out_.fallback = &s, readFallback(v, what);
+    else if (s.keyword == "contact")
+      out_.contact = &s, readContact(v, what);
+    else if (s.keyword == "early_out") {
+      if (auto c = choice(&v, what, {"none", "minmax"})) out_.spec.earlyOutMinMax = *c == 1;
+    } else if (s.keyword == "bleeding")
+      out_.bleeding = &s, readBleeding(v, what);
+    else if (s.keyword == "map_size") {
+      if (auto n = integer(&v, what, 16, 16384)) out_.spec.mapSize = *n;
+    }
+  }
+
+  void readLight(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"area", "disk", "point"});
+    if (!idx) return;
+    Bound b;
+    if (*idx == 2) {
+      if (bind(v, {}, b)) out_.spec.light = LightSpec{LightShape::Point, false, 0.0};
+      return;
+    }
+    out_.spec.light.shape = *idx == 0 ? LightShape::Rect : LightShape::Disk;
+    if (!bind(v, {{"size", true}}, b)) return;
+    const Value* size = get(b, "size");
+    if (!size || (size->kind == Value::Kind::Name && size->text == "scene" && !size->hasArguments)) {
+      out_.spec.light.sizeFromScene = true, out_.spec.light.size = 0.0;
+      return;
+    }
+    if (size->kind == Value::Kind::Name) {
+      at(*size, DiagId::wrongType, arg("size", v), "a number or 'scene'", describeValue(*size));
+      return;
+    }
+    if (auto n = number(size, arg("size", v), Range{0, 1e4, true})) {
+      out_.spec.light.sizeFromScene = false, out_.spec.light.size = *n;
+      out_.lightSizeGiven = true;
+    }
+  }
+
+  void readDepth(const Setting& s) {
+    out_.representation = &s;
+    if (s.hasValue) at(s.value, DiagId::takesNoArguments, s.keyword);
+    out_.spec.representation = Representation::Depth;
+  }
+
+  void readMoments(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"linear", "exp", "evsm2", "evsm4", "power_cdf"});
+    if (!idx) return;
+    out_.spec.representation = Representation::Moments;
+    const Warp warps[] = {Warp::Linear, Warp::Exp, Warp::Evsm2, Warp::Evsm4, Warp::PowerCdf};
+    MomentsSpec& m = out_.spec.moments;
+    m.warp = warps[*idx];
+    std::vector<Param> params;
+    if (m.warp == Warp::Exp || m.warp == Warp::Evsm2 || m.warp == Warp::Evsm4) params.push_back({"exponent", true});
+    if (m.warp == Warp::Evsm4) params.push_back({"negative_exponent", true});
+    if (m.warp != Warp::Exp && m.warp != Warp::PowerCdf) params.push_back({"min_variance", false});
+    for (std::string_view p : {"layers", "split", "overlap"}) params.push_back({p, false});
+    Bound b;
+    bind(v, params, b);
+    if (const Value* x = get(b, "layers")) {
+      // 0 layers would store nothing; 16 layers of rg32f is already 128 bytes per texel.
+      if (auto n =
+              integer(x, arg("layers", v), 1, 16, "at least 1 (a moments map has one layer or more) and at most 16"))
+        m.layers = *n, out_.layers = x;
+    }
+    if (const Value* x = get(b, "overlap")) {
+      if (auto n = number(x, arg("overlap", v), Range{0, 0.25})) m.overlap = *n;
+    }
+    if (const Value* x = get(b, "exponent")) {
+      if (auto n = number(x, arg("exponent", v), Range{0, 100, true})) m.positiveExponent = *n, out_.exponent = x;
+    }
+    if (const Value* x = get(b, "negative_exponent")) {
+      if (auto n = number(x, arg("negative_exponent", v), Range{0, 100, true}))
+        m.negativeExponent = *n, out_.negativeExponent = x;
+    }
+    if (const Value* x = get(b, "min_variance")) {
+      if (auto n = number(x, arg("min_variance", v), Range{0, 1})) m.minVariance = *n, out_.minVariance = x;
+    }
+    if (const Value* x = get(b, "split")) readSplit(*x, arg("split", v));
+  }
+
+  void readSplit(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"uniform", "explicit", "lloyd"});
+    if (!idx) return;
+    MomentsSpec& m = out_.spec.moments;
+    out_.split = &v;
+    Bound b;
+    if (*idx == 0) {
+      if (bind(v, {}, b)) m.split = SplitPlacement::Uniform;
+    } else if (*idx == 2) {
+      m.split = SplitPlacement::Lloyd;
+      if (bind(v, {{"iterations", true}}, b))
+        if (const Value* x = get(b, "iterations"))
+          if (auto n = integer(x, arg("iterations", v), 1, 64)) m.lloydIterations = *n;
+    } else {
+      m.split = SplitPlacement::Explicit;
+      out_.explicitSplits.clear();
+      if (v.arguments.empty()) {
+        at(v, DiagId::missingArgument, v.text, "boundaries");
+        return;
+      }
+      for (const Argument& a : v.arguments) {
+        if (!a.name.empty()) {
+          sink_.report(DiagId::unknownArgument, a.line, a.column, static_cast<int>(a.name.size()), a.name, v.text,
+                       "(positional depth boundaries only)");
+          return;
+        }
+        auto n = number(&a.value, "a split boundary", Range{0, 1});
+        if (!n) return;
+        out_.explicitSplits.push_back(*n);
+      }
+      out_.explicitOk = true;
+    }
+  }
+
+  void readStorage(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"fp32", "fp16", "unorm16", "sat"});
+    if (!idx) return;
+    Bound b;
+    const StorageFormat formats[] = {StorageFormat::Fp32, StorageFormat::Fp16, StorageFormat::Unorm16};
+    if (*idx < 3) {
+      if (bind(v, {}, b)) out_.spec.storage = StorageSpec{formats[*idx], SatKind::None};
+      return;
+    }
+    if (!bind(v, {{"kind", true}, {"format", false}}, b)) return;
+    const Value* kind = get(b, "kind");
+    if (!kind) {
+      at(v, DiagId::missingArgument, "sat", "kind (int32, fp32_centered or fp32)");
+      return;
+    }
+    auto k = choice(kind, arg("kind", v), {"int32", "fp32_centered", "fp32"});
+    if (!k) return;
+    const SatKind kinds[] = {SatKind::Int32, SatKind::Fp32Centered, SatKind::Fp32Naive};
+    out_.spec.storage = StorageSpec{StorageFormat::Fp32, kinds[*k]};
+    if (const Value* f = get(b, "format"))
+      if (auto fi = choice(f, arg("format", v), {"fp32", "fp16", "unorm16"})) out_.spec.storage.format = formats[*fi];
+  }
+
+  void readBlur(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"none", "box", "gaussian"});
+    if (!idx) return;
+    Bound b;
+    if (*idx == 0) {
+      if (bind(v, {}, b)) out_.spec.prefilter.blur = BlurKind::None, out_.spec.prefilter.blurRadius = 0;
+      return;
+    }
+    out_.spec.prefilter.blur = *idx == 1 ? BlurKind::Box : BlurKind::Gaussian;
+    out_.spec.prefilter.blurRadius = 2;
+    if (bind(v, {{"radius", true}}, b))
+      if (const Value* r = get(b, "radius"))
+        if (auto n = integer(r, arg("radius", v), 1, 32)) out_.spec.prefilter.blurRadius = *n;
+  }
+
+  void readBlocker(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"none", "search", "moments"});
+    if (!idx) return;
+    BlockerSpec& bl = out_.spec.blocker;
+    Bound b;
+    if (*idx == 0) {
+      if (bind(v, {}, b)) bl.kind = BlockerKind::None;
+    } else if (*idx == 1) {
+      bl.kind = BlockerKind::Search;
+      if (!bind(v, {{"taps", true}, {"pattern", false}}, b)) return;
+      if (const Value* x = get(b, "taps"))
+        if (auto n = integer(x, arg("taps", v), 1, 64)) bl.taps = *n;
+      if (const Value* x = get(b, "pattern"))
+        if (auto c = choice(x, arg("pattern", v), {"poisson", "grid"}))
+          bl.pattern = *c == 0 ? SamplePattern::Poisson : SamplePattern::Grid;
+    } else {
+      // vssm-yang2010 sec. 5.4: the blocker estimate has its own subdivision; the paper's
+      // "mixed" default is uniform m = 5 for the blocker.
+      bl.kind = BlockerKind::Moments;
+      bl.subdivision = Subdivision::Uniform;
+      if (!bind(v, {{"subdivision", true}}, b)) return;
+      const Value* sub = get(b, "subdivision");
+      if (!sub) return;
+      auto si = variant(*sub, arg("subdivision", v), {"uniform", "quadtree", "none"});
+      if (!si) return;
+      Bound sb;
+      if (*si == 2) {
+        if (bind(*sub, {}, sb)) bl.subdivision = Subdivision::None;
+      } else if (*si == 0) {
+        bl.subdivision = Subdivision::Uniform;
+        if (bind(*sub, {{"m", true}}, sb))
+          if (const Value* x = get(sb, "m"))
+            if (auto n = integer(x, arg("m", *sub), 1, 16)) bl.uniformM = *n;
+      } else {
+        bl.subdivision = Subdivision::Quadtree;
+        if (bind(*sub, {{"height", true}}, sb))
+          if (const Value* x = get(sb, "height"))
+            if (auto n = quadtreeHeight(x, arg("height", *sub))) bl.quadtreeHeight = *n;
+      }
+    }
+  }
+
+  void readKernel(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"fixed", "penumbra", "uniform", "quadtree"});
+    if (!idx) return;
+    KernelSpec& k = out_.spec.kernel;
+    Bound b;
+    std::vector<Param> params;
+    if (*idx == 0) params = {{"size", true}};
+    if (*idx == 2) params = {{"n", true}};
+    if (*idx == 3) params = {{"height", true}, {"traversal", false}};
+    if (*idx != 0) params.insert(params.end(), {{"max", false}, {"lit_threshold", false}});
+    bind(v, params, b);
+    if (*idx == 0) {
+      k.size = KernelSize::Fixed, k.subdivision = Subdivision::None;
+      const Value* x = get(b, "size");
+      if (!x) {
+        at(v, DiagId::missingArgument, "fixed", "size");
+        return;
+      }
+      if (auto n = integer(x, arg("size", v), 1, 63)) {
+        if (*n % 2 == 0)
+          at(*x, DiagId::sizeMustBeOdd, arg("size", v), *n);
+        else
+          k.fixedTexels = *n;
+      }
+      return;
+    }
+    k.size = KernelSize::Penumbra;
+    k.subdivision = *idx == 1 ? Subdivision::None : *idx == 2 ? Subdivision::Uniform : Subdivision::Quadtree;
+    if (const Value* x = get(b, "n"))
+      if (auto n = integer(x, arg("n", v), 1, 32)) k.uniformN = *n;
+    if (const Value* x = get(b, "height"))
+      if (auto n = quadtreeHeight(x, arg("height", v))) k.quadtreeHeight = *n;
+    if (const Value* x = get(b, "traversal"))
+      if (auto c = choice(x, arg("traversal", v), {"table", "unrolled"}))
+        k.traversal = *c == 0 ? QuadtreeTraversal::Table : QuadtreeTraversal::Unrolled;
+    if (const Value* x = get(b, "max"))
+      if (auto n = number(x, arg("max", v), Range{1, 4096})) k.maxTexels = *n;
+    if (const Value* x = get(b, "lit_threshold"))
+      if (auto n = number(x, arg("lit_threshold", v), Range{0, 0.5})) k.litThreshold = *n;
+  }
+
+  void readSampling(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"grid", "bilinear", "poisson"});
+    if (!idx) return;
+    SamplingSpec& s = out_.spec.sampling;
+    Bound b;
+    if (*idx < 2) {
+      s.pattern = *idx == 0 ? PcfPattern::Grid : PcfPattern::Bilinear;
+      if (!bind(v, {{"size", true}}, b)) return;
+      const Value* x = get(b, "size");
+      if (!x) {
+        at(v, DiagId::missingArgument, v.text, "size");
+        return;
+      }
+      if (auto n = squareSize(x, arg("size", v), 1, 16)) s.gridN = *n;
+      return;
+    }
+    s.pattern = PcfPattern::Poisson;
+    if (!bind(v, {{"taps", true}, {"rotate", false}}, b)) return;
+    if (const Value* x = get(b, "taps"))
+      if (auto n = integer(x, arg("taps", v), 1, 64)) s.taps = *n;
+    if (const Value* x = get(b, "rotate"))
+      if (auto c = choice(x, arg("rotate", v), {"stable", "none"}))
+        s.rotation = *c == 0 ? Rotation::Stable : Rotation::None;
+  }
+
+  void readBias(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"constant", "slope", "normal_offset"});
+    if (!idx) return;
+    BiasSpec& bias = out_.spec.bias;
+    const BiasKind kinds[] = {BiasKind::Constant, BiasKind::SlopeScaled, BiasKind::NormalOffset};
+    bias.kind = kinds[*idx];
+    const std::string_view first = *idx == 0 ? "value" : *idx == 1 ? "slope" : "offset";
+    std::vector<Param> params = {{first, true}};
+    if (*idx != 0) params.push_back({"constant", false});
+    Bound b;
+    if (!bind(v, params, b)) return;
+    const Value* x = get(b, first);
+    if (!x && *idx != 1) {
+      at(v, DiagId::missingArgument, v.text, first);
+      return;
+    }
+    if (*idx == 0) {
+      if (auto n = number(x, arg(first, v), Range{0, 1})) bias.constant = *n;
+    } else if (*idx == 1) {
+      if (x)
+        if (auto n = number(x, arg(first, v), Range{0, 10})) bias.slope = *n;
+    } else {
+      if (auto n = number(x, arg(first, v), Range{0, 10})) bias.normalOffset = *n;
+    }
+    if (const Value* c = get(b, "constant"))
+      if (auto n = number(c, arg("constant", v), Range{0, 1})) bias.constant = *n;
+  }
+
+  void readFallback(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"none", "pcf"});
+    if (!idx) return;
+    Bound b;
+    if (*idx == 0) {
+      if (bind(v, {}, b)) out_.spec.fallback = FallbackSpec{false, 2};
+      return;
+    }
+    out_.spec.fallback = FallbackSpec{true, 2};
+    if (bind(v, {{"size", true}}, b))
+      if (const Value* x = get(b, "size"))
+        if (auto n = squareSize(x, arg("size", v), 1, 8)) out_.spec.fallback.n = *n;
+  }
+
+  void readContact(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"none", "pcf"});
+    if (!idx) return;
+    Bound b;
+    if (*idx == 0) {
+      if (bind(v, {}, b)) out_.spec.contact = ContactSpec{false, 3, 0.01};
+      return;
+    }
+    out_.spec.contact = ContactSpec{true, 3, 0.01};
+    if (!bind(v, {{"size", true}, {"epsilon", false}}, b)) return;
+    if (const Value* x = get(b, "size"))
+      if (auto n = squareSize(x, arg("size", v), 1, 8)) out_.spec.contact.n = *n;
+    if (const Value* x = get(b, "epsilon"))
+      if (auto n = number(x, arg("epsilon", v), Range{0, 1, true})) out_.spec.contact.epsilon = *n;
+  }
+
+  void readBleeding(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"none", "reduce"});
+    if (!idx) return;
+    Bound b;
+    if (*idx == 0) {
+      if (bind(v, {}, b)) out_.spec.moments.bleedingReduction = 0.0;
+      return;
+    }
+    if (!bind(v, {{"amount", true}}, b)) return;
+    const Value* x = get(b, "amount");
+    if (!x) {
+      at(v, DiagId::missingArgument, "reduce", "amount");
+      return;
+    }
+    // linstep(amount, 1, p) divides by (1 - amount): 1 itself is a division by zero.
+    if (auto n = number(x, arg("amount", v), Range{0, 1, false, true})) out_.spec.moments.bleedingReduction = *n;
+  }
+
+  const dsl::FilterDecl& f_;
+  dsl::DiagnosticSink& sink_;
+  SettingsRead out_;
+};
+
+}  // namespace
+
+const std::vector<std::string_view>& settingKeywords() { return kSettings; }
+
+SettingsRead readSettings(const dsl::FilterDecl& filter, dsl::DiagnosticSink& sink) {
+  return SettingsReader(filter, sink).run();
+}
+
+}  // namespace shadowc::spec
