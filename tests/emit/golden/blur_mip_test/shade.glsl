@@ -203,10 +203,10 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   return v;
 }
 #line 76
-float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 83
-  float w = shadowc_searchTexels(r);
-#line 88
+float shadowc_momentsTechnique(shadowc_Receiver r){
+#line 86
+  float w = 3.0;
+
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
 #line 44 "lookup/shadowc_lookup.glsl"
@@ -224,13 +224,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 81
+#line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 92
+#line 94
   float v = shadowc_momentsTechnique(r);
-#line 102
+#line 104
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -174,13 +174,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 81
+#line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 99
+#line 101
   float v = shadowc_pcf(r, 7.0);
-#line 102
+#line 104
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -200,13 +200,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 81
+#line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 94
+#line 96
   float v = shadowc_pcss(r);
-#line 102
+#line 104
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -249,7 +249,7 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   return v;
 }
 #line 76
-float shadowc_momentsTechnique(ShadowcReceiver r){
+float shadowc_momentsTechnique(shadowc_Receiver r){
 #line 83
   float w = shadowc_searchTexels(r);
 #line 88
@@ -381,7 +381,7 @@ float shadowc_vssmVisibility(ivec4 rect, float d){
   return shadowc_unit((l * shadowc_aVsmArea + shadowc_aLitArea + l1 * shadowc_aPcfArea)/ total);
 }
 
-float shadowc_vssm(ShadowcReceiver r){
+float shadowc_vssm(shadowc_Receiver r){
   ivec4 searchRect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchRect, r . d);
 #line 222
@@ -406,25 +406,25 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 69
-ivec4 shadowc_influenceRect(ShadowcReceiver r){
+#line 71
+ivec4 shadowc_influenceRect(shadowc_Receiver r){
 
   ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
-#line 75
+#line 77
   ivec2 last = shadowc_mapSize()- 1;
   const int grow = 1 + 0;
   return ivec4(max(rect . xy - grow, ivec2(0)), min(rect . zw + grow, last));
 }
-#line 81
+#line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 86
+#line 88
   float early = shadowc_earlyOut(shadowc_influenceRect(r), r . d);
   if(early >= 0.0)return early;
-#line 90
+#line 92
   float v = shadowc_vssm(r);
-#line 102
+#line 104
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"
