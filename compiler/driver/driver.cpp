@@ -35,14 +35,13 @@ LoadResult checkBuiltSpec(const FilterSpec& spec) {
   return checked;
 }
 
-// Plan, then emit and run the backend: the one place the planner's output meets the emitter.
-// (The emitter still plans internally; it takes `plan` once it renders the PassGraph.)
-FilterEmitResult emitStage(const FilterSpec& spec, const PassGraph& /*plan*/, const Options& options) {
+// Emit and run the backend: the one place the planner's output meets the emitter.
+FilterEmitResult emitStage(const FilterSpec& spec, const PassGraph& plan, const Options& options) {
   EmitOptions eo;
   eo.optimize = options.optimize;
   eo.warningsAsErrors = options.warningsAsErrors;
   eo.lookup = options.lookup;
-  return emitFilter(spec, eo);
+  return emitPassGraph(spec, plan, eo);
 }
 
 // The outputs derived from the SPIR-V (HLSL, MSL, the C++ header), added to the emitted files.

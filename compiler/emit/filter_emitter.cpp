@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "emit/glsl_tidy.h"
-#include "emit/lookup_specialization.h"
 #include "emit/shader_emitter.h"
+#include "emit/specialization_block.h"
 #include "emit/template_includes.h"
-#include "plan/planner.h"
+#include "plan/internal_error.h"
 #include "spec/load_filter.h"
 
 namespace shadowc {
@@ -23,7 +23,7 @@ constexpr const char* kDefaultSignature = "float shadowc_visibility(vec3 worldPo
 // #version and #line (an engine #includes it into its own shader after its #version line).
 // The frame block is left out of the preprocessed body (SHADOWC_FRAME_EXTERNAL) and appended
 // inside its own #ifndef, so the engine's macro still decides (lookup_interface.h).
-bool emitLookup(const FilterSpec& spec, const LookupSpecialization& lookup, const LookupLayout& layout,
+bool emitLookup(const FilterSpec& spec, const Specialization& lookup, const LookupLayout& layout,
                 std::string& text, std::string& log) {
   const std::string wrapper = std::string("#version 460\n#extension GL_GOOGLE_include_directive : require\n") +
                               layout.defines + "#define SHADOWC_FRAME_EXTERNAL 1\n" + kSpecializeMarker +
@@ -72,18 +72,12 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
   return bytes;
 }
 
-FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options) {
+FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, const EmitOptions& options) {
   FilterEmitResult result;
-  LookupSpecialization lookup;
-  try {
-    lookup = specializeLookup(spec);
-  } catch (const std::exception& e) {
-    result.log = spec.location.file + ":" + std::to_string(spec.location.line) + ":" +
-                 std::to_string(spec.location.column) + ": error: " + e.what() + "\n";
-    return result;
-  }
-  PassGraph graph = planPasses(spec);
-  Manifest& m = graph.manifest;
+  const PassSource* shade = shadeSource(graph);
+  if (!shade || graph.sources.size() != graph.manifest.passes.size())
+    throw InternalError("the pass graph of '" + spec.name + "' has no shade pass or a source per pass");
+  Manifest m = graph.manifest;
 
   // One shader per distinct output stem (mip1..mipK share "mip", minmax1..K share "minmax").
   std::map<std::string, EmittedShader> shaders;
@@ -92,13 +86,7 @@ FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options) 
     const PassSource& src = graph.sources[i];
     auto it = shaders.find(src.stem);
     if (it == shaders.end()) {
-      LookupSpecialization s;
-      if (src.lookup) {
-        s = lookup;
-      } else {
-        s.defines = src.defines;
-      }
-      EmittedShader sh = emitComputeShader(src.templatePath, s, so);
+      EmittedShader sh = emitComputeShader(src.templatePath, src.values, so);
       result.log += sh.log;
       if (!sh.ok) return result;
       it = shaders.emplace(src.stem, std::move(sh)).first;
@@ -111,11 +99,12 @@ FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options) 
   }
 
   const auto shadePass = std::find_if(m.passes.begin(), m.passes.end(), [](const Pass& p) { return p.name == "shade"; });
-  if (shadePass == m.passes.end()) throw std::invalid_argument("the plan has no shade pass");
+  if (shadePass == m.passes.end()) throw InternalError("the pass graph of '" + spec.name + "' has no pass named shade");
   LookupLayout layout;
   if (!lookupLayout(*shadePass, options.lookup, layout, result.log)) return result;
   std::string lookupText;
-  if (!emitLookup(spec, lookup, layout, lookupText, result.log)) return result;
+  // The includable lookup is the shade pass's code: the same values, the lookup entry template.
+  if (!emitLookup(spec, shade->values, layout, lookupText, result.log)) return result;
   result.files.push_back({lookupFileName(spec.name), lookupText});
 
   m.compilerVersion = SHADOWC_VERSION;
