@@ -2,11 +2,13 @@
 // glslc-style flags (STYLE.md): -O / -O0, -M / -MD, -Werror; see docs/cli.md.
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "backend/spirv_backend.h"
@@ -30,6 +32,7 @@ struct CompileArgs {
   bool depsFile = false;      // -MD
   std::string depsTarget;     // -MT: the rule's target instead of the outputs
   bool werror = false;
+  uint32_t lookupSet = 0, lookupBindingBase = 0;
 };
 
 int error(const std::string& message) {
@@ -66,18 +69,18 @@ int run(CompileArgs& a, CLI::App& sub) {
   if (a.input.empty()) return error("no input file (shadowc compile FILE.shadow -o DIR)");
   std::set<driver::OutputKind> kinds;
   {
+    static const std::vector<std::pair<std::string, driver::OutputKind>> kKinds{
+        {"glsl", driver::OutputKind::Glsl},         {"spirv", driver::OutputKind::Spirv},
+        {"manifest", driver::OutputKind::Manifest}, {"hlsl", driver::OutputKind::Hlsl},
+        {"msl", driver::OutputKind::Msl},           {"cpp", driver::OutputKind::CppHeader}};
+    const char* expected = "(expected a subset of glsl,spirv,manifest,hlsl,msl,cpp)";
     std::stringstream ss(a.emit);
     for (std::string k; std::getline(ss, k, ',');) {
-      if (k == "glsl")
-        kinds.insert(driver::OutputKind::Glsl);
-      else if (k == "spirv")
-        kinds.insert(driver::OutputKind::Spirv);
-      else if (k == "manifest")
-        kinds.insert(driver::OutputKind::Manifest);
-      else
-        return error("--emit: unknown kind '" + k + "' (expected a subset of glsl,spirv,manifest)");
+      auto it = std::find_if(kKinds.begin(), kKinds.end(), [&](const auto& e) { return e.first == k; });
+      if (it == kKinds.end()) return error("--emit: unknown kind '" + k + "' " + expected);
+      kinds.insert(it->second);
     }
-    if (kinds.empty()) return error("--emit: no kind given (expected a subset of glsl,spirv,manifest)");
+    if (kinds.empty()) return error(std::string("--emit: no kind given ") + expected);
   }
 
   // Stop as early as the request allows: --print-spec alone needs the checker, -M and
@@ -85,6 +88,12 @@ int run(CompileArgs& a, CLI::App& sub) {
   driver::Options options;
   options.optimize = a.optimize;
   options.warningsAsErrors = a.werror;
+  if (a.lookupSet > kMaxLookupSet) return error("--lookup-set: at most " + std::to_string(kMaxLookupSet));
+  if (a.lookupBindingBase > kMaxLookupBindingBase)
+    return error("--lookup-binding-base: at most " + std::to_string(kMaxLookupBindingBase));
+  options.lookup = {a.lookupSet, a.lookupBindingBase};
+  for (driver::OutputKind k : {driver::OutputKind::Hlsl, driver::OutputKind::Msl, driver::OutputKind::CppHeader})
+    if (kinds.count(k)) options.engineOutputs.insert(k);
   if (a.outputDir.empty())
     options.stopAfter = a.printPlan ? driver::Stage::Plan : driver::Stage::Check;
   else if (a.depsToStdout)
@@ -116,7 +125,7 @@ int run(CompileArgs& a, CLI::App& sub) {
   if (!r.plan) return didNotCompile();
 
   std::vector<std::string> outputs;
-  for (const auto& f : driver::plannedOutputs(*r.plan, spec))
+  for (const auto& f : driver::plannedOutputs(*r.plan, spec, options.engineOutputs))
     if (kinds.count(driver::outputKindOf(f))) outputs.push_back((dir / f).string());
   if (!a.depsTarget.empty()) outputs = {a.depsTarget};
   if (a.depsToStdout) {  // glslc -M: dependencies only, nothing compiled or written
@@ -137,7 +146,12 @@ CommandRunner registerCompile(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("compile", "Compile a filter description to GLSL, SPIR-V and manifest.json");
   sub->add_option("input", args->input, "the .shadow filter description");
   sub->add_option("-o,--output", args->outputDir, "output directory (created; files replaced atomically)");
-  sub->add_option("--emit", args->emit, "comma-separated subset of glsl,spirv,manifest (default: all)");
+  sub->add_option("--emit", args->emit,
+                  "comma-separated subset of glsl,spirv,manifest,hlsl,msl,cpp (default: glsl,spirv,manifest)");
+  sub->add_option("--lookup-set", args->lookupSet,
+                  "descriptor set of everything <filter>_lookup.glsl declares (default 0; manifest shade.set)");
+  sub->add_option("--lookup-binding-base", args->lookupBindingBase,
+                  "added to every binding <filter>_lookup.glsl declares (default 0: the shade pass's own)");
   sub->add_flag("--print-spec", args->printSpec, "print the normalized FilterSpec as JSON and stop (unless -o)");
   sub->add_flag("--print-plan", args->printPlan,
                 "print the pass graph (images, passes, every specialization value) and stop (unless -o)");
@@ -150,7 +164,9 @@ CommandRunner registerCompile(CLI::App& app) {
       "  -MD         also write DIR/<filter>.d with those dependencies\n"
       "  -MT TARGET  name TARGET (not the outputs) as the rule's target, with -M or -MD\n"
       "  -Werror     treat warnings (filter description and GLSL) as errors\n"
-      "Outputs: DIR/manifest.json, DIR/<pass>.glsl, DIR/<pass>.spv, DIR/<filter>_lookup.glsl (docs/manifest.md).");
+      "Outputs: DIR/manifest.json, DIR/<pass>.glsl, DIR/<pass>.spv, DIR/<filter>_lookup.glsl (docs/manifest.md);\n"
+      "with --emit hlsl/msl also DIR/<pass>.hlsl/.metal and DIR/<filter>_lookup.hlsl/.metal, with cpp DIR/<filter>.h\n"
+      "(docs/integration.md).");
   sub->allow_extras();
   return [args, sub] { return run(*args, *sub); };
 }

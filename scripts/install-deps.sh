@@ -5,6 +5,7 @@ set -euo pipefail
 PKGS=(
   cmake make g++ pkg-config
   glslang-dev glslang-tools spirv-tools           # GLSL -> SPIR-V, spirv-opt, spirv-val (in process)
+  libspirv-cross-c-shared-dev                     # SPIRV-Cross C++ libraries: --emit hlsl,msl (in process)
   libxxhash-dev                                   # manifest content hash (XXH3-128)
   libvulkan-dev mesa-vulkan-drivers vulkan-validationlayers vulkan-tools   # loader, lavapipe, Khronos layers
   libglm-dev libfmt-dev nlohmann-json3-dev libcli11-dev libstb-dev          # math, format, JSON, CLI, PNG

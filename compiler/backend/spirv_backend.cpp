@@ -49,13 +49,13 @@ class Includer : public glslang::TShader::Includer {
   std::vector<std::unique_ptr<std::string>> kept_;
 };
 
-void setupShader(glslang::TShader& shader, std::string_view source, const std::string& name,
-                 const char*& src, int& len, const char*& nm) {
+void setupShader(glslang::TShader& shader, std::string_view source, const std::string& name, const char*& src,
+                 int& len, const char*& nm, glslang::EShSource language = glslang::EShSourceGlsl) {
   src = source.data();
   len = static_cast<int>(source.size());
   nm = name.c_str();
   shader.setStringsWithLengthsAndNames(&src, &len, &nm, 1);
-  shader.setEnvInput(glslang::EShSourceGlsl, shader.getStage(), glslang::EShClientVulkan, 100);
+  shader.setEnvInput(language, shader.getStage(), glslang::EShClientVulkan, 100);
   shader.setEnvClient(glslang::EShClientVulkan, glslang::EShTargetVulkan_1_2);
   shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_5);
 }
@@ -162,6 +162,40 @@ SpirvResult compileGlsl(std::string_view source, ShaderStage stage, const std::s
         return r;
       }
     }
+  }
+  r.ok = true;
+  return r;
+}
+
+SpirvResult compileHlsl(std::string_view source, ShaderStage stage, const std::string& name, const std::string& entry) {
+  initGlslangOnce();
+  SpirvResult r;
+  glslang::TShader shader(toGlslang(stage));
+  const char* src;
+  int len;
+  const char* nm;
+  setupShader(shader, source, name, src, len, nm, glslang::EShSourceHlsl);
+  shader.setEntryPoint(entry.c_str());
+  const auto messages = static_cast<EShMessages>(kMessages | EShMsgReadHlsl);
+  Includer includer(IncludeResolver{});
+  if (!shader.parse(GetDefaultResources(), 100, false, messages, includer)) {
+    r.log = std::string(shader.getInfoLog()) + shader.getInfoDebugLog();
+    return r;
+  }
+  glslang::TProgram program;
+  program.addShader(&shader);
+  if (!program.link(messages)) {
+    r.log = program.getInfoLog();
+    return r;
+  }
+  glslang::SpvOptions spvOptions;
+  spvOptions.disableOptimizer = true;
+  spv::SpvBuildLogger logger;
+  glslang::GlslangToSpv(*program.getIntermediate(toGlslang(stage)), r.words, &logger, &spvOptions);
+  r.log += logger.getAllMessages();
+  if (auto err = validateSpirv(r.words); !err.empty()) {
+    r.log += name + ": error: glslang's HLSL front end produced invalid SPIR-V: " + err;
+    return r;
   }
   r.ok = true;
   return r;

@@ -37,6 +37,10 @@ SpirvResult preprocessGlsl(std::string_view source, ShaderStage stage, const std
 SpirvResult compileGlsl(std::string_view source, ShaderStage stage, const std::string& name,
                         const IncludeResolver& includes, const BackendOptions& options);
 
+// HLSL -> SPIR-V with glslang's HLSL front end (entry point `entry`), validated, never
+// optimized: the round-trip check of translated HLSL (cross_compile.h, tests/engine).
+SpirvResult compileHlsl(std::string_view source, ShaderStage stage, const std::string& name, const std::string& entry);
+
 // spirv-val on a module (Vulkan 1.2 rules). Empty string when valid, else the message.
 std::string validateSpirv(const std::vector<uint32_t>& words);
 

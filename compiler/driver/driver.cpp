@@ -3,8 +3,11 @@
 
 #include <algorithm>
 #include <exception>
+#include <map>
 #include <utility>
 
+#include "emit/cpp_header.h"
+#include "emit/cross_outputs.h"
 #include "emit/filter_emitter.h"
 #include "emit/output_writer.h"
 #include "plan/planner.h"
@@ -37,7 +40,27 @@ FilterEmitResult emitStage(const FilterSpec& spec, const PassGraph& plan, const 
   EmitOptions eo;
   eo.optimize = options.optimize;
   eo.warningsAsErrors = options.warningsAsErrors;
+  eo.lookup = options.lookup;
   return emitPassGraph(spec, plan, eo);
+}
+
+// The outputs derived from the SPIR-V (HLSL, MSL, the C++ header), added to the emitted files.
+bool engineOutputs(FilterEmitResult& emitted, const Options& options, std::string& log) {
+  std::vector<EmittedFile> extra;
+  for (const auto& [kind, target] :
+       {std::pair{OutputKind::Hlsl, CrossTarget::Hlsl}, {OutputKind::Msl, CrossTarget::Msl}})
+    if (options.engineOutputs.count(kind) && !crossOutputs(emitted.manifest, emitted.files, target, extra, log))
+      return false;
+  if (options.engineOutputs.count(OutputKind::CppHeader)) {
+    std::map<std::string, std::string> spirv;
+    for (const EmittedFile& f : emitted.files)
+      if (outputKindOf(f.name) == OutputKind::Spirv) spirv.emplace(f.name, f.bytes);
+    extra.push_back({cppHeaderFileName(emitted.manifest.filter), cppHeader(emitted.manifest, spirv)});
+  }
+  emitted.files.insert(emitted.files.end(), extra.begin(), extra.end());
+  std::sort(emitted.files.begin(), emitted.files.end(),
+            [](const EmittedFile& a, const EmittedFile& b) { return a.name < b.name; });
+  return true;
 }
 
 // Everything after the front end, shared by the three entry points.
@@ -71,6 +94,7 @@ Result finish(const LoadResult& loaded, const Options& options) {
   }
   r.log += emitted.log;
   if (!emitted.ok) return r;
+  if (!engineOutputs(emitted, options, r.log)) return r;
   r.artifact = Artifact{spec, *r.plan, std::move(emitted.manifest), std::move(emitted.files)};
   r.ok = true;
   return r;
@@ -101,6 +125,9 @@ CompiledPasses Artifact::passes() const {
 OutputKind outputKindOf(const std::string& fileName) {
   if (fileName == kManifestFile) return OutputKind::Manifest;
   if (fileName.ends_with(".spv")) return OutputKind::Spirv;
+  if (fileName.ends_with(".hlsl")) return OutputKind::Hlsl;
+  if (fileName.ends_with(".metal")) return OutputKind::Msl;
+  if (fileName.ends_with(".h")) return OutputKind::CppHeader;
   return OutputKind::Glsl;
 }
 
@@ -119,12 +146,20 @@ Result compileSpec(const FilterSpec& spec, const Options& options) {
   return finish(unchecked, options);
 }
 
-std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec& spec) {
+std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec& spec,
+                                        const std::set<OutputKind>& engineOutputs) {
   std::set<std::string> names{kManifestFile, lookupFileName(spec.name)};
+  std::set<std::string> stems{lookupFileName(spec.name).substr(0, lookupFileName(spec.name).rfind('.'))};
   for (const Pass& p : plan.manifest.passes) {
     names.insert(p.glsl);
     names.insert(p.spirv);
+    stems.insert(p.spirv.substr(0, p.spirv.rfind('.')));
   }
+  for (const auto& [kind, target] :
+       {std::pair{OutputKind::Hlsl, CrossTarget::Hlsl}, {OutputKind::Msl, CrossTarget::Msl}})
+    if (engineOutputs.count(kind))
+      for (const std::string& stem : stems) names.insert(stem + crossExtension(target));
+  if (engineOutputs.count(OutputKind::CppHeader)) names.insert(cppHeaderFileName(spec.name));
   return {names.begin(), names.end()};
 }
 

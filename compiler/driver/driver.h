@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "emit/content_hash.h"  // EmittedFile
+#include "emit/lookup_interface.h"
 #include "manifest/compiled_passes.h"
 #include "manifest/manifest.h"
 #include "plan/pass_graph.h"
@@ -24,9 +25,12 @@ namespace shadowc::driver {
 // Where the driver stops: `shadowc check` stops after Check, `--print-plan` / -M after Plan.
 enum class Stage { Check, Plan, Emit };
 
-// What `--emit` keeps when the artifact is written (the artifact in memory always has all).
-enum class OutputKind { Glsl, Spirv, Manifest };
-// manifest.json -> Manifest, *.spv -> Spirv, everything else (pass .glsl, the lookup) -> Glsl.
+// What `--emit` keeps when the artifact is written. Glsl, Spirv and Manifest are always in the
+// artifact; Hlsl, Msl and CppHeader are derived from the SPIR-V (a SPIRV-Cross translation per
+// shader) and only produced when Options::engineOutputs asks for them.
+enum class OutputKind { Glsl, Spirv, Manifest, Hlsl, Msl, CppHeader };
+// manifest.json -> Manifest, *.spv -> Spirv, *.hlsl -> Hlsl, *.metal -> Msl, *.h -> CppHeader,
+// everything else (pass .glsl, the lookup) -> Glsl.
 OutputKind outputKindOf(const std::string& fileName);
 
 struct Options {
@@ -37,6 +41,8 @@ struct Options {
   // suite's naive demonstrations (docs/stability.md), which compile on purpose what the checker
   // rightly rejects (an EVSM exponent past the storage limit) to show it failing.
   bool checkBuiltSpec = true;
+  LookupPlacement lookup;  // --lookup-set / --lookup-binding-base (emit/lookup_interface.h)
+  std::set<OutputKind> engineOutputs;  // any of Hlsl, Msl, CppHeader (emit/cross_outputs.h, emit/cpp_header.h)
 };
 
 // A compiled filter, in memory.
@@ -45,6 +51,7 @@ struct Artifact {
   PassGraph plan;                  // the planner's output (passes, images, typed values)
   Manifest manifest;               // as written to manifest.json (spec, hash, shade included)
   std::vector<EmittedFile> files;  // sorted by name: <stem>.glsl/.spv, <filter>_lookup.glsl, manifest.json
+                                   // (+ <stem>.hlsl/.metal, <filter>_lookup.hlsl/.metal, <filter>.h when asked)
   // The bytes of one output file, or nullptr.
   const std::string* file(const std::string& name) const;
   // The manifest and its .spv files, for the run harness (runtime/harness/run_harness.h).
@@ -68,8 +75,10 @@ Result compileFile(const std::string& path, const Options& options = {});
 // diagnostic, never an emitter exception.
 Result compileSpec(const FilterSpec& spec, const Options& options = {});
 
-// The output file names a spec will produce, without compiling (for -M).
-std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec& spec);
+// The output file names a spec will produce, without compiling (for -M), including the engine
+// outputs asked for.
+std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec& spec,
+                                        const std::set<OutputKind>& engineOutputs = {});
 
 // Writes the artifact's files of the given kinds (all when empty) plus `extra` files into
 // `dir`, all-or-nothing (emit/output_writer.h). Returns "" on success, else one line.

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "emit/content_hash.h"
+#include "emit/lookup_interface.h"
 #include "manifest/manifest.h"
 #include "plan/pass_graph.h"
 #include "spec/filter_spec.h"
@@ -18,6 +19,7 @@ namespace shadowc {
 struct EmitOptions {
   bool optimize = true;           // -O (default) / -O0
   bool warningsAsErrors = false;  // -Werror
+  LookupPlacement lookup;         // --lookup-set / --lookup-binding-base (lookup_interface.h)
 };
 
 struct FilterEmitResult {

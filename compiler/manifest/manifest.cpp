@@ -156,6 +156,7 @@ nlohmann::ordered_json toJson(const Manifest& m) {
   shade["glsl"] = m.shade.glsl;
   shade["function"] = m.shade.function;
   shade["signature"] = m.shade.signature;
+  shade["set"] = m.shade.set;
   auto& sb = shade["bindings"] = nlohmann::ordered_json::array();
   for (const auto& b : m.shade.bindings) sb.push_back(bindingJson(b));
   j["shade"] = std::move(shade);
@@ -205,6 +206,7 @@ Manifest manifestFromJson(const nlohmann::json& j) {
   m.shade.glsl = get<std::string>(s, "glsl");
   m.shade.function = get<std::string>(s, "function");
   m.shade.signature = get<std::string>(s, "signature");
+  m.shade.set = s.contains("set") ? get<uint32_t>(s, "set") : 0;  // absent before --lookup-set: set 0
   for (const auto& b : field(s, "bindings")) m.shade.bindings.push_back(bindingFromJson(b));
   m.contentHash = get<std::string>(j, "content_hash");
   // Cross-references: every binding names a declared image (or the frame buffer).

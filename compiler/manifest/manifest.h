@@ -86,6 +86,7 @@ struct ShadeInterface {
   std::string glsl;       // file with the function and its resource declarations
   std::string function;   // e.g. "shadowc_visibility"
   std::string signature;  // e.g. "float shadowc_visibility(vec3 worldPos, vec3 worldNormal)"
+  uint32_t set = 0;       // descriptor set of every binding below (compile --lookup-set)
   std::vector<Binding> bindings;
 };
 

@@ -12,18 +12,18 @@
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal) {
   vec3 p = worldPos;
 #if SHADOWC_BIAS_KIND == SHADOWC_BIAS_NORMAL_OFFSET_KIND
-  float z0 = (frame.lightView * vec4(worldPos, 1.0)).z;
-  float texelWorld = 2.0 * max(z0, 0.0) * frame.lightParams.x / float(shadowc_mapSize().x);
+  float z0 = (shadowc_frame().lightView * vec4(worldPos, 1.0)).z;
+  float texelWorld = 2.0 * max(z0, 0.0) * shadowc_frame().lightParams.x / float(shadowc_mapSize().x);
   p += worldNormal * (SHADOWC_NORMAL_OFFSET * texelWorld);
 #endif
-  vec3 pl = (frame.lightView * vec4(p, 1.0)).xyz;
+  vec3 pl = (shadowc_frame().lightView * vec4(p, 1.0)).xyz;
   return vec4(p, pl.z > 0.0 ? 1.0 : 0.0);
 }
 
 float shadowc_bias(vec3 worldPos, vec3 worldNormal) {
 #if SHADOWC_BIAS_KIND == SHADOWC_BIAS_SLOPE_SCALED_KIND
-  vec3 pl = (frame.lightView * vec4(worldPos, 1.0)).xyz;
-  vec3 nl = mat3(frame.lightView) * worldNormal;
+  vec3 pl = (shadowc_frame().lightView * vec4(worldPos, 1.0)).xyz;
+  vec3 nl = mat3(shadowc_frame().lightView) * worldNormal;
   // N.L with L towards the light centre; a zero-length vector gives N.L = 0 (max bias), not NaN.
   float len = length(nl) * length(pl);
   float ndotl = len > 0.0 ? clamp(dot(nl, -pl) / len, 0.0, 1.0) : 0.0;

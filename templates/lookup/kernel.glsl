@@ -5,7 +5,7 @@
 #ifndef SHADOWC_KERNEL_GLSL
 #define SHADOWC_KERNEL_GLSL
 
-struct ShadowcReceiver {
+struct shadowc_Receiver {
   vec2 uv;           // shadow-map uv
   vec2 texel;        // uv * map size: continuous texel coordinates (texel i covers [i, i+1))
   float d;           // normalized receiver depth minus bias: texel z occludes when z < d
@@ -18,7 +18,7 @@ float shadowc_lightWidth() {
 #ifdef SHADOWC_LIGHT_WIDTH
   return SHADOWC_LIGHT_WIDTH;
 #else
-  return max(frame.lightParams.w, 0.0);
+  return max(shadowc_frame().lightParams.w, 0.0);
 #endif
 }
 
@@ -43,14 +43,14 @@ ivec4 shadowc_kernelRect(vec2 c, float w) {
 }
 
 // Blocker search width (L7): the cone from the receiver to the light cut at the near plane.
-float shadowc_searchTexels(ShadowcReceiver r) {
+float shadowc_searchTexels(shadowc_Receiver r) {
   return shadowc_clampTexels(shadowc_searchWidthUV(r.lightWidth, r.zr) * float(shadowc_mapSize().x));
 }
 
 // Penumbra width (L16, PCSS) for an average blocker at normalized depth zBlocker. The blocker
 // view depth is kept >= near so that the division by zb in frame.glsl stays finite.
-float shadowc_penumbraTexels(ShadowcReceiver r, float zBlocker) {
-  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), frame.lightParams.y);
+float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker) {
+  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame().lightParams.y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r.lightWidth, r.zr, zb) * float(shadowc_mapSize().x));
 }
 

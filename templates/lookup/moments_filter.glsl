@@ -75,7 +75,7 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d) {
 
 // The moments technique: kernel width fixed, or driven by a PCSS blocker search on the depth map
 // (or the whole search region when there is no blocker estimate), then the filtered estimate.
-float shadowc_momentsTechnique(ShadowcReceiver r) {
+float shadowc_momentsTechnique(shadowc_Receiver r) {
 #if SHADOWC_KERNEL_PENUMBRA
 #if SHADOWC_BLOCKER_KIND == SHADOWC_BLOCKER_SEARCH
   float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r));

@@ -56,7 +56,7 @@ float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot) {
 
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCF || SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS
 // The filter's PCF: pattern and size chosen by the specialization.
-float shadowc_pcf(ShadowcReceiver r, float w) {
+float shadowc_pcf(shadowc_Receiver r, float w) {
 #if SHADOWC_PCF_PATTERN == SHADOWC_PATTERN_POISSON
 #if !SHADOWC_HAS_POISSON_PCF
 #error "Poisson PCF needs the generated shadowc_poissonPcf taps"

@@ -10,7 +10,7 @@
 #define SHADOWC_PCSS_GLSL
 
 // Average occluder depth over a search region `w` texels wide, or -1 when nothing occludes.
-float shadowc_blockerSearch(ShadowcReceiver r, float w) {
+float shadowc_blockerSearch(shadowc_Receiver r, float w) {
   float sum = 0.0;
   float count = 0.0;
 #if SHADOWC_BLOCKER_PATTERN == 1
@@ -41,7 +41,7 @@ float shadowc_blockerSearch(ShadowcReceiver r, float w) {
 }
 
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS
-float shadowc_pcss(ShadowcReceiver r) {
+float shadowc_pcss(shadowc_Receiver r) {
   float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r));
   if (zb < 0.0) return 1.0;
   return shadowc_pcf(r, shadowc_penumbraTexels(r, zb));

@@ -1,7 +1,8 @@
 // resources.glsl — the shadow-map resources of the lookup (bindings 4..8 of the shade pass,
 // briefing table). Only what the filter uses is declared, so an engine that #includes the
 // emitted <filter>_lookup.glsl binds exactly the images listed in the manifest. The set is
-// SHADOWC_SET (default 0) and every binding can be moved with SHADOWC_BINDING_*.
+// SHADOWC_SET (default 0) and every binding can be moved with SHADOWC_BINDING_*; the emitter
+// sets them from `shadowc compile --lookup-set N --lookup-binding-base B` (lookup_interface.h).
 #ifndef SHADOWC_RESOURCES_GLSL
 #define SHADOWC_RESOURCES_GLSL
 

@@ -3,8 +3,10 @@
 // Specialized by the #defines of defaults.glsl (set by compiler/emit/lookup_specialization.cpp
 // at the `@shadowc:specialize` marker of the including shader). The emitter ships the
 // preprocessed text as <filter>_lookup.glsl so an engine can #include it into its own shader;
-// it needs frame.glsl (set 0, binding SHADOWC_FRAME_BINDING) and the resources of
-// resources.glsl (set SHADOWC_SET, bindings 4..8).
+// it needs frame.glsl (shadowc_frame(): our block at set SHADOWC_SET, binding
+// SHADOWC_BINDING_FRAME, or the engine's own data with SHADOWC_FRAME_EXTERNAL) and the
+// resources of resources.glsl (set SHADOWC_SET, bindings SHADOWC_BINDING_*). Every global is
+// prefixed shadowc_ (compiler/emit/lookup_interface.h places and checks them).
 #ifndef SHADOWC_LOOKUP_GLSL
 #define SHADOWC_LOOKUP_GLSL
 
@@ -49,7 +51,7 @@
 // The receiver for a world position, with the bias applied. Returns false when the point is
 // behind the light or outside the shadow map's frustum (then it is lit: nothing was rendered
 // that could shadow it).
-bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r) {
+bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r) {
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r.worldPos = worldPos;
   r.lightWidth = shadowc_lightWidth();
@@ -58,7 +60,7 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r) {
   r.uv = ls.xy;
   r.texel = ls.xy * vec2(shadowc_mapSize());
   r.d = ls.z - shadowc_bias(worldPos, worldNormal);
-  r.zr = max(ls.w, frame.lightParams.y);
+  r.zr = max(ls.w, shadowc_frame().lightParams.y);
   // Written so that NaN coordinates also count as outside.
   return all(greaterThanEqual(ls.xy, vec2(0.0))) && all(lessThanEqual(ls.xy, vec2(1.0)));
 }
@@ -68,7 +70,7 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r) {
 // be exact (the widest kernel, grown by one texel for bilinear taps and rounding, and by the
 // prefilter's blur radius, SHADOWC_EARLY_OUT_GROW: a blurred moment holds texels that far
 // away; issue 9 defect 5, stability case minmax_blur_footprint).
-ivec4 shadowc_influenceRect(ShadowcReceiver r) {
+ivec4 shadowc_influenceRect(shadowc_Receiver r) {
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS || SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM || SHADOWC_KERNEL_PENUMBRA
   ivec4 rect = shadowc_kernelRect(r.texel, shadowc_searchTexels(r));
 #else
@@ -81,7 +83,7 @@ ivec4 shadowc_influenceRect(ShadowcReceiver r) {
 #endif
 
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
-  ShadowcReceiver r;
+  shadowc_Receiver r;
   if (!shadowc_receiver(worldPos, worldNormal, r)) return 1.0;
 #if SHADOWC_EARLY_OUT && SHADOWC_HAS_MINMAX
   // vssm-yang2010 sec. 6.1 / Algorithm 1 L8-L10.

@@ -198,7 +198,7 @@ float shadowc_vssmVisibility(ivec4 rect, float d) {
   return shadowc_unit((l * shadowc_aVsmArea + shadowc_aLitArea + l1 * shadowc_aPcfArea) / total);
 }
 
-float shadowc_vssm(ShadowcReceiver r) {
+float shadowc_vssm(shadowc_Receiver r) {
   ivec4 searchRect = shadowc_kernelRect(r.texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchRect, r.d); SHADOWC_NAIVE_VSSM_RETURN(zb)
 #if SHADOWC_CONTACT

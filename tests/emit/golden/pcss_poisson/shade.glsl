@@ -5,48 +5,59 @@ const vec2 shadowc_poissonPcf[32]= vec2[](vec2(- 0.0841346765, - 0.637574607), v
 
 const vec2 shadowc_poissonBlocker[16]= vec2[](vec2(0.0958530825, - 0.595546058), vec2(0.33019398, 0.934204178), vec2(- 0.923934603, 0.307299889), vec2(0.870788861, 0.000214432748), vec2(- 0.752278945, - 0.583465332), vec2(- 0.134503773, 0.216850642), vec2(- 0.315759173, 0.852034183), vec2(0.648619334, - 0.711916121), vec2(0.416443818, 0.335460411), vec2(0.3979976, - 0.176631552), vec2(- 0.354441991, - 0.929124403), vec2(- 0.600433688, - 0.0948364334), vec2(0.812060969, 0.546462762), vec2(- 0.513792422, 0.45951067), vec2(- 0.255871891, - 0.344512652), vec2(0.0727314297, 0.577132379));
 #line 1 "frame.glsl"
-#line 19
-layout(set = 0, binding = 0, std140)uniform ShadowcFrame {
+#line 20
+struct shadowc_Frame {
+  mat4 lightView;
+  vec4 lightParams;
+};
+shadowc_Frame shadowc_frame();
+
+#line 1 "frame_block.glsl"
+#line 15
+layout(set = 0, binding = 0, std140)uniform shadowc_FrameBlock {
   mat4 lightView;
   vec4 lightParams;
   vec4 lightShape;
   vec4 mapInfo;
   vec4 screenInfo;
-} frame;
-#line 28
+} shadowc_frameBlock;
+
+shadowc_Frame shadowc_frame(){ return shadowc_Frame(shadowc_frameBlock . lightView, shadowc_frameBlock . lightParams);}
+#line 27 "frame.glsl"
+#line 30
 vec4 shadowc_lightSpace(vec3 worldPos){
-  vec3 p =(frame . lightView * vec4(worldPos, 1.0)). xyz;
-  vec2 uv = 0.5 + 0.5 * p . xy /(p . z * frame . lightParams . x);
-  float d =(p . z - frame . lightParams . y)/(frame . lightParams . z - frame . lightParams . y);
+  vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
+  vec2 uv = 0.5 + 0.5 * p . xy /(p . z * shadowc_frame(). lightParams . x);
+  float d =(p . z - shadowc_frame(). lightParams . y)/(shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y);
   return vec4(uv, d, p . z);
 }
 
-float shadowc_viewZ(float d){ return frame . lightParams . y + d *(frame . lightParams . z - frame . lightParams . y);}
-#line 38
+float shadowc_viewZ(float d){ return shadowc_frame(). lightParams . y + d *(shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y);}
+#line 40
 float shadowc_lightSizeUV(float lightWidth){
-  return lightWidth /(2.0 * frame . lightParams . y * frame . lightParams . x);
+  return lightWidth /(2.0 * shadowc_frame(). lightParams . y * shadowc_frame(). lightParams . x);
 }
-#line 44
+#line 46
 float shadowc_searchWidthUV(float lightWidth, float zr){
-  return shadowc_lightSizeUV(lightWidth)*(zr - frame . lightParams . y)/ zr;
+  return shadowc_lightSizeUV(lightWidth)*(zr - shadowc_frame(). lightParams . y)/ zr;
 }
-#line 50
+#line 52
 float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb){
-  return shadowc_lightSizeUV(lightWidth)* frame . lightParams . y *(zr - zb)/(zb * zr);
+  return shadowc_lightSizeUV(lightWidth)* shadowc_frame(). lightParams . y *(zr - zb)/(zb * zr);
 }
 #line 11 "templates/shade.comp"
 #line 1 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/defaults.glsl"
-#line 12 "lookup/shadowc_lookup.glsl"
-#line 1 "frame.glsl"
-#line 13 "lookup/shadowc_lookup.glsl"
-#line 1 "lookup/resources.glsl"
-#line 10
-layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
 #line 14 "lookup/shadowc_lookup.glsl"
+#line 1 "frame.glsl"
+#line 15 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/resources.glsl"
+#line 11
+layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
+#line 16 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/kernel.glsl"
 #line 8
-struct ShadowcReceiver {
+struct shadowc_Receiver {
   vec2 uv;
   vec2 texel;
   float d;
@@ -57,7 +68,7 @@ struct ShadowcReceiver {
 
 float shadowc_lightWidth(){
 #line 21
-  return max(frame . lightParams . w, 0.0);
+  return max(shadowc_frame(). lightParams . w, 0.0);
 
 }
 
@@ -77,37 +88,37 @@ ivec4 shadowc_kernelRect(vec2 c, float w){
   return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
 }
 #line 46
-float shadowc_searchTexels(ShadowcReceiver r){
+float shadowc_searchTexels(shadowc_Receiver r){
   return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
 }
 #line 52
-float shadowc_penumbraTexels(ShadowcReceiver r, float zBlocker){
-  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), frame . lightParams . y);
+float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
+  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
 #line 58
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
-#line 15 "lookup/shadowc_lookup.glsl"
+#line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
 #line 12
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
   vec3 p = worldPos;
 #line 19
-  vec3 pl =(frame . lightView * vec4(p, 1.0)). xyz;
+  vec3 pl =(shadowc_frame(). lightView * vec4(p, 1.0)). xyz;
   return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
 }
 
 float shadowc_bias(vec3 worldPos, vec3 worldNormal){
 
-  vec3 pl =(frame . lightView * vec4(worldPos, 1.0)). xyz;
-  vec3 nl = mat3(frame . lightView)* worldNormal;
+  vec3 pl =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
+  vec3 nl = mat3(shadowc_frame(). lightView)* worldNormal;
 
   float len = length(nl)* length(pl);
   float ndotl = len > 0.0 ? clamp(dot(nl, - pl)/ len, 0.0, 1.0): 0.0;
   return max(0.005 *(1.0 - ndotl), 0.001);
 #line 34
 }
-#line 16 "lookup/shadowc_lookup.glsl"
+#line 18 "lookup/shadowc_lookup.glsl"
 
 #line 1 "lookup/rotation.glsl"
 #line 10
@@ -133,7 +144,7 @@ vec2 shadowc_rotation(vec3 worldPos){
 }
 
 vec2 shadowc_rotate(vec2 tap, vec2 rot){ return vec2(rot . x * tap . x - rot . y * tap . y, rot . y * tap . x + rot . x * tap . y);}
-#line 18 "lookup/shadowc_lookup.glsl"
+#line 20 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcf.glsl"
 #line 12
 float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< d ? 0.0 : 1.0;}
@@ -145,15 +156,15 @@ float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot){
   return lit / float(32);
 }
 #line 59
-float shadowc_pcf(ShadowcReceiver r, float w){
+float shadowc_pcf(shadowc_Receiver r, float w){
 #line 64
   return shadowc_pcfPoisson(r . texel, w, r . d, shadowc_rotation(r . worldPos));
 #line 70
 }
-#line 21 "lookup/shadowc_lookup.glsl"
+#line 23 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcss.glsl"
 #line 13
-float shadowc_blockerSearch(ShadowcReceiver r, float w){
+float shadowc_blockerSearch(shadowc_Receiver r, float w){
   float sum = 0.0;
   float count = 0.0;
 #line 20
@@ -169,14 +180,14 @@ float shadowc_blockerSearch(ShadowcReceiver r, float w){
   return count > 0.0 ? sum / count : - 1.0;
 }
 #line 44
-float shadowc_pcss(ShadowcReceiver r){
+float shadowc_pcss(shadowc_Receiver r){
   float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r));
   if(zb < 0.0)return 1.0;
   return shadowc_pcf(r, shadowc_penumbraTexels(r, zb));
 }
-#line 24 "lookup/shadowc_lookup.glsl"
+#line 26 "lookup/shadowc_lookup.glsl"
 #line 52
-bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
+bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
   r . lightWidth = shadowc_lightWidth();
@@ -185,13 +196,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
-  r . zr = max(ls . w, frame . lightParams . y);
+  r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
 #line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
-  ShadowcReceiver r;
+  shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
 #line 96
   float v = shadowc_pcss(r);

@@ -5,54 +5,65 @@ const ivec3 shadowc_qtNode[85]= ivec3[](ivec3(0, 0, 1), ivec3(0, 0, 2), ivec3(0,
 const int shadowc_qtChild[85]= int[](1, 2, 3, - 1, - 1, - 1, - 1, 8, - 1, - 1, - 1, - 1, 13, - 1, - 1, - 1, - 1, 18, - 1, - 1, - 1, - 1, 23, 24, - 1, - 1, - 1, - 1, 29, - 1, - 1, - 1, - 1, 34, - 1, - 1, - 1, - 1, 39, - 1, - 1, - 1, - 1, 44, 45, - 1, - 1, - 1, - 1, 50, - 1, - 1, - 1, - 1, 55, - 1, - 1, - 1, - 1, 60, - 1, - 1, - 1, - 1, 65, 66, - 1, - 1, - 1, - 1, 71, - 1, - 1, - 1, - 1, 76, - 1, - 1, - 1, - 1, 81, - 1, - 1, - 1, - 1);
 const int shadowc_qtNext[85]= int[](- 1, 22, 7, 4, 5, 6, 7, 12, 9, 10, 11, 12, 17, 14, 15, 16, 17, 22, 19, 20, 21, 22, 43, 28, 25, 26, 27, 28, 33, 30, 31, 32, 33, 38, 35, 36, 37, 38, 43, 40, 41, 42, 43, 64, 49, 46, 47, 48, 49, 54, 51, 52, 53, 54, 59, 56, 57, 58, 59, 64, 61, 62, 63, 64, - 1, 70, 67, 68, 69, 70, 75, 72, 73, 74, 75, 80, 77, 78, 79, 80, - 1, 82, 83, 84, - 1);
 #line 1 "frame.glsl"
-#line 19
-layout(set = 0, binding = 0, std140)uniform ShadowcFrame {
+#line 20
+struct shadowc_Frame {
+  mat4 lightView;
+  vec4 lightParams;
+};
+shadowc_Frame shadowc_frame();
+
+#line 1 "frame_block.glsl"
+#line 15
+layout(set = 0, binding = 0, std140)uniform shadowc_FrameBlock {
   mat4 lightView;
   vec4 lightParams;
   vec4 lightShape;
   vec4 mapInfo;
   vec4 screenInfo;
-} frame;
-#line 28
+} shadowc_frameBlock;
+
+shadowc_Frame shadowc_frame(){ return shadowc_Frame(shadowc_frameBlock . lightView, shadowc_frameBlock . lightParams);}
+#line 27 "frame.glsl"
+#line 30
 vec4 shadowc_lightSpace(vec3 worldPos){
-  vec3 p =(frame . lightView * vec4(worldPos, 1.0)). xyz;
-  vec2 uv = 0.5 + 0.5 * p . xy /(p . z * frame . lightParams . x);
-  float d =(p . z - frame . lightParams . y)/(frame . lightParams . z - frame . lightParams . y);
+  vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
+  vec2 uv = 0.5 + 0.5 * p . xy /(p . z * shadowc_frame(). lightParams . x);
+  float d =(p . z - shadowc_frame(). lightParams . y)/(shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y);
   return vec4(uv, d, p . z);
 }
 
-float shadowc_viewZ(float d){ return frame . lightParams . y + d *(frame . lightParams . z - frame . lightParams . y);}
-#line 38
+float shadowc_viewZ(float d){ return shadowc_frame(). lightParams . y + d *(shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y);}
+#line 40
 float shadowc_lightSizeUV(float lightWidth){
-  return lightWidth /(2.0 * frame . lightParams . y * frame . lightParams . x);
+  return lightWidth /(2.0 * shadowc_frame(). lightParams . y * shadowc_frame(). lightParams . x);
 }
-#line 44
+#line 46
 float shadowc_searchWidthUV(float lightWidth, float zr){
-  return shadowc_lightSizeUV(lightWidth)*(zr - frame . lightParams . y)/ zr;
+  return shadowc_lightSizeUV(lightWidth)*(zr - shadowc_frame(). lightParams . y)/ zr;
 }
-#line 50
+#line 52
 float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb){
-  return shadowc_lightSizeUV(lightWidth)* frame . lightParams . y *(zr - zb)/(zb * zr);
+  return shadowc_lightSizeUV(lightWidth)* shadowc_frame(). lightParams . y *(zr - zb)/(zb * zr);
 }
 #line 11 "templates/shade.comp"
 #line 1 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/defaults.glsl"
-#line 12 "lookup/shadowc_lookup.glsl"
-#line 1 "frame.glsl"
-#line 13 "lookup/shadowc_lookup.glsl"
-#line 1 "lookup/resources.glsl"
-#line 10
-layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
-#line 14
-layout(set = 0, binding = 5)uniform sampler2DArray shadowc_moments;
-#line 20
-layout(set = 0, binding = 6)uniform usampler2DArray shadowc_summedArea;
-#line 28
-layout(set = 0, binding = 7)uniform sampler2D shadowc_minMaxPyramid;
 #line 14 "lookup/shadowc_lookup.glsl"
+#line 1 "frame.glsl"
+#line 15 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/resources.glsl"
+#line 11
+layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
+#line 15
+layout(set = 0, binding = 5)uniform sampler2DArray shadowc_moments;
+#line 21
+layout(set = 0, binding = 6)uniform usampler2DArray shadowc_summedArea;
+#line 29
+layout(set = 0, binding = 7)uniform sampler2D shadowc_minMaxPyramid;
+#line 16 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/kernel.glsl"
 #line 8
-struct ShadowcReceiver {
+struct shadowc_Receiver {
   vec2 uv;
   vec2 texel;
   float d;
@@ -63,7 +74,7 @@ struct ShadowcReceiver {
 
 float shadowc_lightWidth(){
 #line 21
-  return max(frame . lightParams . w, 0.0);
+  return max(shadowc_frame(). lightParams . w, 0.0);
 
 }
 
@@ -83,23 +94,23 @@ ivec4 shadowc_kernelRect(vec2 c, float w){
   return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
 }
 #line 46
-float shadowc_searchTexels(ShadowcReceiver r){
+float shadowc_searchTexels(shadowc_Receiver r){
   return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
 }
 #line 52
-float shadowc_penumbraTexels(ShadowcReceiver r, float zBlocker){
-  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), frame . lightParams . y);
+float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
+  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
 #line 58
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
-#line 15 "lookup/shadowc_lookup.glsl"
+#line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
 #line 12
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
   vec3 p = worldPos;
 #line 19
-  vec3 pl =(frame . lightView * vec4(p, 1.0)). xyz;
+  vec3 pl =(shadowc_frame(). lightView * vec4(p, 1.0)). xyz;
   return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
 }
 
@@ -108,7 +119,7 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
   return 0.001;
 
 }
-#line 16 "lookup/shadowc_lookup.glsl"
+#line 18 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/minmax.glsl"
 #line 17
 vec2 shadowc_minMaxOfRect(ivec4 rect){
@@ -134,7 +145,7 @@ float shadowc_earlyOut(ivec4 rect, float d){
   if(mm . y < d)return 0.0;
   return - 1.0;
 }
-#line 27 "lookup/shadowc_lookup.glsl"
+#line 29 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/chebyshev.glsl"
 #line 14
 float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance){
@@ -150,7 +161,7 @@ float shadowc_reduceBleeding(float p){
   return p;
 
 }
-#line 30 "lookup/shadowc_lookup.glsl"
+#line 32 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/sat.glsl"
 #line 24
 const float shadowc_satVarianceFloor = 2.4e-5;
@@ -223,25 +234,25 @@ float shadowc_estimate(vec4 m, float d, float minVariance){
   minVariance = max(minVariance, shadowc_satVarianceFloor);
 
   return shadowc_reduceBleeding(shadowc_chebyshev(m . x, m . y, d, minVariance));
-#line 51
+#line 49
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 59
+#line 57
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 73
+#line 71
   return v;
 }
-#line 78
-float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 85
+#line 76
+float shadowc_momentsTechnique(shadowc_Receiver r){
+#line 83
   float w = shadowc_searchTexels(r);
-#line 90
+#line 88
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
 #line 44 "lookup/shadowc_lookup.glsl"
@@ -370,7 +381,7 @@ float shadowc_vssmVisibility(ivec4 rect, float d){
   return shadowc_unit((l * shadowc_aVsmArea + shadowc_aLitArea + l1 * shadowc_aPcfArea)/ total);
 }
 
-float shadowc_vssm(ShadowcReceiver r){
+float shadowc_vssm(shadowc_Receiver r){
   ivec4 searchRect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchRect, r . d);
 #line 222
@@ -382,7 +393,7 @@ float shadowc_vssm(ShadowcReceiver r){
 }
 #line 47 "lookup/shadowc_lookup.glsl"
 #line 52
-bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
+bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
   r . lightWidth = shadowc_lightWidth();
@@ -391,12 +402,12 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
-  r . zr = max(ls . w, frame . lightParams . y);
+  r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
 #line 71
-ivec4 shadowc_influenceRect(ShadowcReceiver r){
+ivec4 shadowc_influenceRect(shadowc_Receiver r){
 
   ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
 #line 77
@@ -406,7 +417,7 @@ ivec4 shadowc_influenceRect(ShadowcReceiver r){
 }
 #line 83
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
-  ShadowcReceiver r;
+  shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
 #line 88
   float early = shadowc_earlyOut(shadowc_influenceRect(r), r . d);

@@ -1,0 +1,218 @@
+// The C++ header output (cpp_header.h). Values are written from the Manifest model only, so the
+// header and manifest.json cannot disagree (tests/emit/cpp_header_test.cpp compiles one and
+// checks every value against the manifest with static_asserts).
+#include "emit/cpp_header.h"
+
+#include <fmt/format.h>
+
+#include <array>
+#include <cctype>
+#include <cstdint>
+#include <stdexcept>
+
+namespace shadowc {
+namespace {
+
+// C++ enumerator names of the generated types, indexed by the manifest enums' values.
+constexpr std::array<const char*, 12> kFormatNames{"R32F",        "RG32F",   "RGBA32F",  "R16F",
+                                                   "RG16F",       "RGBA16F", "R16Unorm", "RG16Unorm",
+                                                   "RGBA16Unorm", "R32UI",   "RG32UI",   "RGBA32UI"};
+constexpr std::array<const char*, 5> kRoleNames{"Internal", "InputDepth", "InputPosition", "InputNormal",
+                                                "OutputVisibility"};
+constexpr std::array<const char*, 5> kAccessNames{"Sampled", "StorageRead", "StorageWrite", "StorageReadWrite",
+                                                  "Uniform"};
+constexpr std::array<const char*, 3> kModeNames{"Texels", "Rows", "Columns"};
+constexpr std::array<const char*, 3> kScalarNames{"U32", "I32", "F32"};
+constexpr std::array<const char*, 2> kDomainNames{"Map", "Screen"};
+
+template <size_t N, typename E>
+const char* nameOf(const std::array<const char*, N>& table, E e) {
+  const auto i = static_cast<size_t>(e);
+  if (i >= N) throw std::invalid_argument("cpp header: enum value out of range");
+  return table[i];
+}
+
+// The shared declarations; bump the guard's number with any change to them.
+constexpr const char* kTypes = R"(#ifndef SHADOWC_GENERATED_TYPES_V1
+#define SHADOWC_GENERATED_TYPES_V1
+namespace shadowc_filters {
+enum class Format : std::uint32_t { R32F, RG32F, RGBA32F, R16F, RG16F, RGBA16F, R16Unorm, RG16Unorm, RGBA16Unorm,
+                                    R32UI, RG32UI, RGBA32UI };
+enum class Role : std::uint32_t { Internal, InputDepth, InputPosition, InputNormal, OutputVisibility };
+enum class Access : std::uint32_t { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform };
+enum class Domain : std::uint32_t { Map, Screen };      // extent = max(1, domain extent >> shift)
+enum class DispatchMode : std::uint32_t { Texels, Rows, Columns };
+enum class Scalar : std::uint32_t { U32, I32, F32 };
+struct SizeRule { Domain domain; int shift; };
+struct Image {
+  const char* name;
+  Format format;
+  SizeRule size;
+  int mipLevels;  // 0 = full chain
+  int layers;
+  Role role;
+  bool linearFilter;
+};
+struct Binding {
+  std::uint32_t binding;
+  const char* image;  // image name, or "frame" (the ShadowcFrame uniform buffer)
+  int imageIndex;     // index into images, -1 for the frame buffer
+  Access access;
+  int level;          // storage views: the mip level bound; -1 = level 0 / whole image
+};
+struct PushConstant { const char* name; std::uint32_t offset; Scalar type; double value; };
+struct Pass {
+  const char* name;
+  const char* kind;
+  const std::uint32_t* spirv;
+  std::size_t spirvWords;
+  std::uint32_t localSize[3];
+  SizeRule dispatchSize;
+  DispatchMode dispatchMode;
+  const Binding* bindings;
+  std::size_t bindingCount;
+  const PushConstant* pushConstants;
+  std::size_t pushConstantCount;
+};
+struct Lookup {  // the includable lookup (manifest "shade")
+  const char* glsl;
+  const char* function;
+  const char* signature;
+  std::uint32_t set;
+  const Binding* bindings;
+  std::size_t bindingCount;
+};
+struct Filter {
+  const char* name;
+  const char* compilerVersion;
+  const char* contentHash;
+  const Image* images;
+  std::size_t imageCount;
+  const Pass* passes;
+  std::size_t passCount;
+  Lookup lookup;
+};
+}  // namespace shadowc_filters
+#endif
+)";
+
+std::string identifier(const std::string& s) {
+  std::string out;
+  for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) ? c : '_');
+  if (out.empty() || std::isdigit(static_cast<unsigned char>(out[0]))) out = "_" + out;
+  return out;
+}
+
+std::string quoted(const std::string& s) {
+  std::string out = "\"";
+  for (char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    out += c;
+  }
+  return out + "\"";
+}
+
+// Exact: %.17g round-trips every double; integers stay integers.
+std::string doubleLiteral(double v) {
+  std::string s = fmt::format("{:.17g}", v);
+  if (s.find_first_of(".eEn") == std::string::npos) s += ".0";
+  return s;
+}
+
+std::string sizeRule(const SizeRule& r) {
+  return fmt::format("{{Domain::{}, {}}}", nameOf(kDomainNames, r.domain), r.shift);
+}
+
+int imageIndex(const Manifest& m, const std::string& name) {
+  for (size_t i = 0; i < m.images.size(); ++i)
+    if (m.images[i].name == name) return static_cast<int>(i);
+  return -1;
+}
+
+std::string bindingArray(const Manifest& m, const std::string& arrayName, const std::vector<Binding>& bindings) {
+  if (bindings.empty()) return "";
+  std::string out = fmt::format("inline constexpr Binding {}[] = {{\n", arrayName);
+  for (const Binding& b : bindings)
+    out += fmt::format("    {{{}, {}, {}, Access::{}, {}}},\n", b.binding, quoted(b.image), imageIndex(m, b.image),
+                       nameOf(kAccessNames, b.access), b.level);
+  return out + "};\n";
+}
+
+std::string wordArray(const std::string& arrayName, const std::string& bytes) {
+  if (bytes.size() % 4 != 0) throw std::invalid_argument("cpp header: SPIR-V size is not a multiple of 4");
+  std::string out = fmt::format("inline constexpr std::uint32_t {}[{}] = {{", arrayName, bytes.size() / 4);
+  for (size_t i = 0; i < bytes.size() / 4; ++i) {
+    uint32_t w = 0;
+    for (int b = 0; b < 4; ++b) w |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[4 * i + b])) << (8 * b);
+    out += fmt::format("{}0x{:08x}u", i % 8 == 0 ? "\n    " : " ", w);
+    if (i + 1 < bytes.size() / 4) out += ",";
+  }
+  return out + "\n};\n";
+}
+
+}  // namespace
+
+std::string cppHeaderFileName(const std::string& filterName) { return filterName + ".h"; }
+
+std::string cppHeader(const Manifest& m, const std::map<std::string, std::string>& spirv) {
+  std::string out = fmt::format(
+      "// {} - generated by shadowc {} from filter '{}' (content hash {}). Do not edit.\n"
+      "// The filter's passes (SPIR-V) and manifest as constexpr data: docs/integration.md.\n"
+      "#pragma once\n#include <cstddef>\n#include <cstdint>\n\n",
+      cppHeaderFileName(m.filter), m.compilerVersion, m.filter, m.contentHash);
+  out += kTypes;
+  out += fmt::format("\nnamespace shadowc_filters::{} {{\nusing namespace shadowc_filters;\n\n", identifier(m.filter));
+
+  // SPIR-V, one array per distinct file (passes that share a shader share the array).
+  std::map<std::string, std::string> arrayOf;
+  for (const Pass& p : m.passes) {
+    if (arrayOf.count(p.spirv)) continue;
+    const auto it = spirv.find(p.spirv);
+    if (it == spirv.end()) throw std::invalid_argument("cpp header: pass '" + p.name + "' names missing " + p.spirv);
+    const std::string name = "spirv_" + identifier(p.spirv.substr(0, p.spirv.rfind('.')));
+    arrayOf[p.spirv] = name;
+    out += "// " + p.spirv + "\n" + wordArray(name, it->second);
+  }
+
+  out += "\ninline constexpr Image images[] = {\n";
+  for (const ImageDesc& i : m.images)
+    out += fmt::format("    {{{}, Format::{}, {}, {}, {}, Role::{}, {}}},\n", quoted(i.name),
+                       nameOf(kFormatNames, i.format), sizeRule(i.size), i.mipLevels, i.layers,
+                       nameOf(kRoleNames, i.role), i.linearFilter ? "true" : "false");
+  out += "};\n\n";
+
+  for (size_t i = 0; i < m.passes.size(); ++i) {
+    const Pass& p = m.passes[i];
+    out += bindingArray(m, fmt::format("pass{}_bindings", i), p.bindings);
+    if (!p.pushConstants.empty()) {
+      out += fmt::format("inline constexpr PushConstant pass{}_push[] = {{\n", i);
+      for (const PushConstant& c : p.pushConstants)
+        out += fmt::format("    {{{}, {}, Scalar::{}, {}}},\n", quoted(c.name), c.offset, nameOf(kScalarNames, c.type),
+                           doubleLiteral(c.value));
+      out += "};\n";
+    }
+  }
+  out += "\ninline constexpr Pass passes[] = {\n";
+  for (size_t i = 0; i < m.passes.size(); ++i) {
+    const Pass& p = m.passes[i];
+    const std::string& arr = arrayOf.at(p.spirv);
+    out +=
+        fmt::format("    {{{}, {}, {}, sizeof {} / 4, {{{}, {}, {}}}, {}, DispatchMode::{},\n     {}, {}, {}, {}}},\n",
+                    quoted(p.name), quoted(p.kind), arr, arr, p.localSize[0], p.localSize[1], p.localSize[2],
+                    sizeRule(p.dispatch.size), nameOf(kModeNames, p.dispatch.mode),
+                    p.bindings.empty() ? "nullptr" : fmt::format("pass{}_bindings", i), p.bindings.size(),
+                    p.pushConstants.empty() ? "nullptr" : fmt::format("pass{}_push", i), p.pushConstants.size());
+  }
+  out += "};\n\n";
+  out += bindingArray(m, "lookup_bindings", m.shade.bindings);
+  out += fmt::format(
+      "\ninline constexpr Filter filter{{\n    {}, {}, {},\n    images, sizeof images / sizeof images[0],\n"
+      "    passes, sizeof passes / sizeof passes[0],\n    {{{}, {}, {}, {}, {}, {}}}}};\n\n}}  // namespace "
+      "shadowc_filters::{}\n",
+      quoted(m.filter), quoted(m.compilerVersion), quoted(m.contentHash), quoted(m.shade.glsl),
+      quoted(m.shade.function), quoted(m.shade.signature), m.shade.set,
+      m.shade.bindings.empty() ? "nullptr" : "lookup_bindings", m.shade.bindings.size(), identifier(m.filter));
+  return out;
+}
+
+}  // namespace shadowc
