@@ -10,6 +10,7 @@ PKGS=(
   libglm-dev libfmt-dev nlohmann-json3-dev libcli11-dev libstb-dev          # math, format, JSON, CLI, PNG
   libembree-dev libtbb-dev libassimp-dev zlib1g-dev              # reference, meshes (assimp links libz.so)
   libgtest-dev libgmock-dev libbenchmark-dev                                # tests and benchmarks
+  assimp-testmodels                             # real meshes of the duck/spider/engine scenes (/usr/share/assimp/models)
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -113,7 +113,12 @@ Result compileFile(const std::string& path, const Options& options) {
   return finish(loadFilterFile(path, loadOptions(options)), options);
 }
 
-Result compileSpec(const FilterSpec& spec, const Options& options) { return finish(checkBuiltSpec(spec), options); }
+Result compileSpec(const FilterSpec& spec, const Options& options) {
+  if (options.checkBuiltSpec) return finish(checkBuiltSpec(spec), options);
+  LoadResult unchecked;
+  unchecked.spec = spec;
+  return finish(unchecked, options);
+}
 
 std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec& spec) {
   std::set<std::string> names{kManifestFile, lookupFileName(spec.name)};

@@ -33,6 +33,10 @@ struct Options {
   bool optimize = true;           // -O (default) / -O0
   bool warningsAsErrors = false;  // -Werror: front-end and GLSL warnings fail the compile
   Stage stopAfter = Stage::Emit;
+  // compileSpec re-checks a spec built in code through the checker. Off only for the stability
+  // suite's naive demonstrations (docs/stability.md), which compile on purpose what the checker
+  // rightly rejects (an EVSM exponent past the storage limit) to show it failing.
+  bool checkBuiltSpec = true;
 };
 
 // A compiled filter, in memory.

@@ -155,6 +155,9 @@ LookupSpecialization specializeLookup(const FilterSpec& s) {
   defInt("SHADOWC_CONTACT_N", std::max(1, s.contact.n));
   defFloat("SHADOWC_CONTACT_EPSILON", s.contact.epsilon);
   defInt("SHADOWC_EARLY_OUT", s.earlyOutMinMax ? 1 : 0);
+  // The early out must cover the blur footprint too (shadowc_lookup.glsl, shadowc_influenceRect).
+  if (s.earlyOutMinMax && moments && s.prefilter.blur != BlurKind::None && s.prefilter.blurRadius > 0)
+    defInt("SHADOWC_EARLY_OUT_GROW", s.prefilter.blurRadius);
   // Stability-suite demonstration only (FilterSpec::naiveUnguarded; validation/).
   if (s.naiveUnguarded) defInt("SHADOWC_NAIVE_UNGUARDED", 1);
 

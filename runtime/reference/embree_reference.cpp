@@ -44,43 +44,70 @@ float normalOffset(const glm::vec3& p, const glm::vec3& lightPos) {
   return 1e-4f * std::max({mag, 0.01f * glm::length(p - lightPos), 1e-20f});
 }
 
+struct PixelValue {
+  float visibility = 1;
+  int rays = 0;
+};
+
 class PixelTracer {
  public:
-  PixelTracer(const EmbreeScene& embree, int samplesPerAxis)
-      : embree_(embree), light_(embree.scene().light), n_(light_.width > 0 ? samplesPerAxis : 1) {}
+  PixelTracer(const EmbreeScene& embree, int samplesPerAxis, ReferenceMeasure measure)
+      : embree_(embree), light_(embree.scene().light), n_(light_.width > 0 ? samplesPerAxis : 1), measure_(measure) {}
 
-  int raysPerPixel() const { return n_ * n_; }
-
-  float visibility(const glm::vec3& p, const glm::vec3& normal, uint64_t pixelIndex) const {
+  PixelValue visibility(const glm::vec3& p, const glm::vec3& normal, uint64_t pixelIndex) const {
     const glm::vec3 org = p + normalOffset(p, light_.position) * normal;
-    int visible = 0;
+    const bool weighted = measure_ == ReferenceMeasure::ShadowingTerm;
+    // Double sums: 1024^2 samples of weights spanning many orders of magnitude (depth_range).
+    double unoccluded = 0, total = 0;
+    int rays = 0;
     for (int j = 0; j < n_; ++j) {
       for (int i = 0; i < n_; ++i) {
         const uint64_t h = mix(mix(pixelIndex ^ kJitterSeed) + static_cast<uint64_t>(j * n_ + i));
         const glm::vec3 target = lightSamplePoint(light_, i, j, n_, unitFloat(h), unitFloat(mix(h)));
+        double w = 1;
+        if (weighted) {
+          // cos_r cos_l / r^2 = (n . d)(l . -d) / |d|^4 with d = sample - point; samples behind
+          // the tangent plane (n . d <= 0) are not part of the shadowing term's light.
+          const glm::dvec3 d = glm::dvec3(target) - glm::dvec3(p);
+          const double cosR = glm::dot(glm::dvec3(normal), d);
+          if (cosR <= 0) continue;
+          const double cosL = std::max(0.0, -glm::dot(glm::dvec3(light_.direction), d));
+          const double d2 = glm::dot(d, d);
+          w = cosR * cosL / (d2 * d2);
+          if (!(w > 0)) continue;
+        }
+        total += w;
+        ++rays;
         // Traced from the light sample to the (offset) point, not the other way: the light's
         // coordinates are the small ones, so an occluder 1e-3 in front of a light seen from a
         // receiver 1e4 away (depth_range) is still resolved in fp32; the segment ends at the
         // offset point, so the receiver itself is never hit.
-        if (!embree_.occluded(target, org - target, 1.0f)) ++visible;
+        if (!embree_.occluded(target, org - target, 1.0f)) unoccluded += w;
       }
     }
-    return static_cast<float>(visible) / static_cast<float>(n_ * n_);
+    // No light in front of the tangent plane: the point receives none (see ReferenceMeasure).
+    if (total <= 0) return {0.0f, rays};
+    return {static_cast<float>(std::clamp(unoccluded / total, 0.0, 1.0)), rays};
   }
 
  private:
   const EmbreeScene& embree_;
   const AreaLight& light_;
   int n_;
+  ReferenceMeasure measure_;
 };
 
 std::string cacheKey(const Scene& scene, const std::vector<float>& pos, const std::vector<float>& nrm, uint32_t w,
-                     uint32_t h, int samples) {
+                     uint32_t h, int samples, ReferenceMeasure measure) {
   XXH3_state_t* s = XXH3_createState();
   XXH3_128bits_reset(s);
   const std::string sceneHash = scene.contentHash();
-  const char tag[] = "shadowc-reference-v1";
+  // v2: the shadowing term (weighted, tangent plane) replaced the plain light fraction; the
+  // measure's name is part of the key, so the two never share an entry.
+  const char tag[] = "shadowc-reference-v2";
   XXH3_128bits_update(s, tag, sizeof tag);
+  const std::string measureName = referenceMeasureName(measure);
+  XXH3_128bits_update(s, measureName.data(), measureName.size());
   XXH3_128bits_update(s, sceneHash.data(), sceneHash.size());
   const uint32_t header[3] = {w, h, static_cast<uint32_t>(samples)};
   XXH3_128bits_update(s, header, sizeof header);
@@ -130,6 +157,10 @@ bool decodeCache(const std::filesystem::path& file, const std::string& key, Refe
 
 }  // namespace
 
+const char* referenceMeasureName(ReferenceMeasure m) {
+  return m == ReferenceMeasure::ShadowingTerm ? "shadowing_term" : "light_fraction";
+}
+
 glm::vec3 lightSamplePoint(const AreaLight& light, int i, int j, int n, float ju, float jv) {
   const float u = (static_cast<float>(i) + ju) / static_cast<float>(n);  // [0, 1)
   const float v = (static_cast<float>(j) + jv) / static_cast<float>(n);
@@ -173,7 +204,7 @@ std::filesystem::path defaultReferenceCacheDir() {
 ReferenceResult traceReference(const Scene& scene, const std::vector<float>& positionsRGBA,
                                const std::vector<float>& normalsRGBA, uint32_t width, uint32_t height,
                                int samplesPerAxis, const std::filesystem::path& cacheDir, ProgressFn progress,
-                               bool useCache) {
+                               bool useCache, ReferenceMeasure measure) {
   const size_t pixels = size_t(width) * height;
   if (positionsRGBA.size() != pixels * 4 || normalsRGBA.size() != pixels * 4) {
     throw std::invalid_argument(fmt::format("traceReference: G-buffer holds {} / {} floats, expected {} ({}x{} RGBA)",
@@ -187,10 +218,11 @@ ReferenceResult traceReference(const Scene& scene, const std::vector<float>& pos
   r.width = width;
   r.height = height;
   r.samplesPerAxis = samplesPerAxis;
+  r.measure = measure;
   const auto start = std::chrono::steady_clock::now();
   std::string key;
   if (useCache) {
-    key = cacheKey(scene, positionsRGBA, normalsRGBA, width, height, samplesPerAxis);
+    key = cacheKey(scene, positionsRGBA, normalsRGBA, width, height, samplesPerAxis, measure);
     r.cacheFile = (cacheDir.empty() ? defaultReferenceCacheDir() : cacheDir) / ("reference-" + key + ".bin");
     if (decodeCache(r.cacheFile, key, r)) {
       r.fromCache = true;
@@ -201,28 +233,29 @@ ReferenceResult traceReference(const Scene& scene, const std::vector<float>& pos
   }
 
   const EmbreeScene embree(scene);
-  const PixelTracer tracer(embree, samplesPerAxis);
+  const PixelTracer tracer(embree, samplesPerAxis, measure);
   r.visibility.assign(pixels, 1.0f);
   // Bands of rows, each traced on all cores; progress is reported between bands from this thread.
   const uint32_t band = std::max<uint32_t>(1, height / 16);
-  uint64_t tracedPixels = 0;
+  uint64_t rays = 0;
   for (uint32_t y0 = 0; y0 < height; y0 += band) {
     const uint32_t y1 = std::min(height, y0 + band);
-    std::atomic<uint64_t> bandHits{0};
+    std::atomic<uint64_t> bandRays{0};
     tbb::parallel_for(y0, y1, [&](uint32_t y) {
-      uint64_t hits = 0;
+      uint64_t rowRays = 0;
       for (uint32_t x = 0; x < width; ++x) {
         const size_t i = size_t(y) * width + x;
         const float* p = &positionsRGBA[i * 4];
         if (p[3] == 0.0f) continue;  // background: fully lit by convention
         const float* n = &normalsRGBA[i * 4];
-        r.visibility[i] = tracer.visibility({p[0], p[1], p[2]}, {n[0], n[1], n[2]}, i);
-        ++hits;
+        const PixelValue v = tracer.visibility({p[0], p[1], p[2]}, {n[0], n[1], n[2]}, i);
+        r.visibility[i] = v.visibility;
+        rowRays += static_cast<uint64_t>(v.rays);
       }
-      bandHits += hits;
+      bandRays += rowRays;
     });
-    tracedPixels += bandHits.load();
-    r.rays = tracedPixels * static_cast<uint64_t>(tracer.raysPerPixel());
+    rays += bandRays.load();
+    r.rays = rays;
     r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     r.raysPerSecond = r.seconds > 0 ? static_cast<double>(r.rays) / r.seconds : 0;
     if (progress) progress({size_t(y1) * width, pixels, r.rays, r.seconds, r.raysPerSecond});
@@ -239,9 +272,9 @@ ReferenceResult traceReference(const Scene& scene, const std::vector<float>& pos
 }
 
 float referenceVisibilityAt(const Scene& scene, const glm::vec3& position, const glm::vec3& normal, int samplesPerAxis,
-                            uint64_t pixelIndex) {
+                            uint64_t pixelIndex, ReferenceMeasure measure) {
   const EmbreeScene embree(scene);
-  return PixelTracer(embree, samplesPerAxis).visibility(position, normal, pixelIndex);
+  return PixelTracer(embree, samplesPerAxis, measure).visibility(position, normal, pixelIndex).visibility;
 }
 
 }  // namespace shadowc::rt

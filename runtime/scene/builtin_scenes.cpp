@@ -47,6 +47,11 @@ ordered_json sphere(const char* name, double radius, ordered_json xform) {
   return {{"type", "sphere"}, {"name", name}, {"radius", radius},
           {"segments", 32},   {"rings", 16},  {"transform", xform}};
 }
+ordered_json meshObject(const char* name, const std::string& path, ordered_json xform) {
+  return {{"type", "mesh"}, {"name", name}, {"path", path}, {"transform", xform}};
+}
+// Where Debian's assimp-testmodels package installs its models.
+const std::string kAssimpModels = "/usr/share/assimp/models";
 ordered_json floorPlane(double size = 10) { return plane("floor", size, size, transform(v3(0, 0, 0))); }
 
 ordered_json scene(const char* name, const char* description, ordered_json cam, ordered_json lit,
@@ -153,6 +158,30 @@ const std::map<std::string, ordered_json>& builtins() {
                 {"name", "knot"},
                 {"path", "knot.obj"},
                 {"transform", transform(v3(0, 2.0, 0), v3(20, 0, 0), 2.0)}}});
+    // Meshes nobody here made: Debian's assimp-testmodels (scripts/install-deps.sh), loaded through
+    // assimp by their absolute install path. Scale and lift put each on the floor at y = 0.
+    t["duck"] = scene("duck",
+                      "The COLLADA duck (assimp-testmodels Collada/duck.dae, 4212 triangles): smooth curved surfaces "
+                      "that shadow themselves (head over neck and breast, tail over back); terminators and acne.",
+                      camera(v3(2.6, 2.4, 3.6), v3(0.15, 1.0, 0)),
+                      light("disk", v3(2.0, 6, 1.5), ordered_json(v3(-0.3, -1, -0.25)), 1.0),
+                      {floorPlane(8), meshObject("duck", kAssimpModels + "/Collada/duck.dae",
+                                                 transform(v3(0, -0.148, 0), v3(0, -30, 0), 1.5))});
+    t["spider"] = scene("spider",
+                        "The assimp-testmodels spider (OBJ/spider.obj, 1368 triangles): eight legs thinner than the "
+                        "penumbra touching the floor, a body above them; thin features, contact and overlap.",
+                        camera(v3(0.5, 3.5, 4.5), v3(0, 0.3, 0)),
+                        light("rect", v3(0.6, 6, 0.8), ordered_json(v3(-0.1, -1, -0.13)), 1.0),
+                        {floorPlane(8), meshObject("spider", kAssimpModels + "/OBJ/spider.obj",
+                                                   transform(v3(0.3, 0.85, 0.2), v3(0, 20, 0), 0.02))});
+    t["engine"] = scene(
+        "engine",
+        "The glTF 2 two-cylinder engine (assimp-testmodels glTF2/2CylinderEngine, 121496 triangles, 34 parts): "
+        "dense machinery, many overlapping parts at several depths, small gaps and thin rods.",
+        camera(v3(3.9, 4.2, 5.4), v3(0, 0.5, 0)),
+        light("rect", v3(1.0, 7, 1.5), ordered_json(v3(-0.15, -1, -0.2)), 1.5),
+        {floorPlane(8), meshObject("engine", kAssimpModels + "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
+                                   transform(v3(0, 1.1, 0), nullptr, 0.006))});
     return t;
   }();
   return table;

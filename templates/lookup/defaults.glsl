@@ -208,6 +208,9 @@
 #ifndef SHADOWC_EARLY_OUT
 #define SHADOWC_EARLY_OUT 0
 #endif
+#ifndef SHADOWC_EARLY_OUT_GROW
+#define SHADOWC_EARLY_OUT_GROW 0  // texels the prefilter spreads a depth by (blur radius)
+#endif
 
 // ---- stability-suite demonstration (FilterSpec::naiveUnguarded; docs/stability.md) ----------
 // 1: eq. 4 of vssm-yang2010 as printed (no 1 - P guard, no clamp), the raw blocker depth written

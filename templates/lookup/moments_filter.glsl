@@ -35,6 +35,9 @@ vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer) {
 // Visibility from mean moments m for a receiver at (layer-warped) depth d.
 float shadowc_estimate(vec4 m, float d, float minVariance) {
 #if SHADOWC_WARP == SHADOWC_WARP_LINEAR
+#if SHADOWC_HAS_SAT
+  minVariance = max(minVariance, shadowc_satVarianceFloor);  // sat.glsl: int32 box-mean noise
+#endif
   return shadowc_reduceBleeding(shadowc_chebyshev(m.x, m.y, d, minVariance));
 #elif SHADOWC_WARP == SHADOWC_WARP_EXP
   return shadowc_esm(m.x, d);

@@ -14,6 +14,18 @@
 #ifndef SHADOWC_SAT_GLSL
 #define SHADOWC_SAT_GLSL
 
+// Variance noise of int32 box means (issue 9, defect 2): each stored value is within half a
+// quantum (2^-17) of the exact one, so a box mean of x and of x^2 each err by up to e = 2^-17 and
+// E[x^2] - E[x]^2 by up to e (1 + 2 E[x]) + e^2 <= 3 * 2^-17 = 2.29e-5, plus fp32 rounding of the
+// means: 2.4e-5. A smaller minimum variance (the default is 1e-5) lets that noise, not the
+// depths, decide Chebyshev on small and flat boxes, so linear moments read from an int32 SAT use
+// at least this floor (intent_reference.cpp uses the same).
+#if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
+const float shadowc_satVarianceFloor = 2.4e-5;
+#else
+const float shadowc_satVarianceFloor = 0.0;
+#endif
+
 #if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
 uvec4 shadowc_summedCorner(int x, int y, int layer) {
   if (x < 0 || y < 0) return uvec4(0u);

@@ -63,7 +63,9 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r) {
 
 #if SHADOWC_EARLY_OUT && SHADOWC_HAS_MINMAX
 // Texel rectangle whose texels can influence the result: the early out must cover all of it to
-// be exact (the widest kernel, grown by one texel for bilinear taps and rounding).
+// be exact (the widest kernel, grown by one texel for bilinear taps and rounding, and by the
+// prefilter's blur radius, SHADOWC_EARLY_OUT_GROW: a blurred moment holds texels that far
+// away; issue 9 defect 5, stability case minmax_blur_footprint).
 ivec4 shadowc_influenceRect(ShadowcReceiver r) {
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS || SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM || SHADOWC_KERNEL_PENUMBRA
   ivec4 rect = shadowc_kernelRect(r.texel, shadowc_searchTexels(r));
@@ -71,7 +73,8 @@ ivec4 shadowc_influenceRect(ShadowcReceiver r) {
   ivec4 rect = shadowc_kernelRect(r.texel, SHADOWC_KERNEL_FIXED_TEXELS);
 #endif
   ivec2 last = shadowc_mapSize() - 1;
-  return ivec4(max(rect.xy - 1, ivec2(0)), min(rect.zw + 1, last));
+  const int grow = 1 + SHADOWC_EARLY_OUT_GROW;
+  return ivec4(max(rect.xy - grow, ivec2(0)), min(rect.zw + grow, last));
 }
 #endif
 

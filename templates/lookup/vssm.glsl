@@ -40,7 +40,11 @@ float shadowc_aPcfDepth; // area-weighted sum of the occluding PCF samples' dept
 void shadowc_vssmBegin(ivec4 root, float d) {
   shadowc_vRoot = root;
   shadowc_vD = d;
+#if SHADOWC_HAS_SAT
+  shadowc_vMinVariance = max(SHADOWC_MIN_VARIANCE, shadowc_satVarianceFloor);  // sat.glsl: int32 noise
+#else
   shadowc_vMinVariance = SHADOWC_MIN_VARIANCE;
+#endif
   shadowc_aEx = 0.0;
   shadowc_aEx2 = 0.0;
   shadowc_aVsmArea = 0.0;
@@ -206,17 +210,31 @@ float shadowc_vssmVisibility(ivec4 rect, float d) {
 }
 
 float shadowc_vssm(ShadowcReceiver r) {
-  float zb = shadowc_vssmBlocker(shadowc_kernelRect(r.texel, shadowc_searchTexels(r)), r.d); SHADOWC_NAIVE_VSSM_RETURN(zb)
+  ivec4 searchRect = shadowc_kernelRect(r.texel, shadowc_searchTexels(r));
+  float zb = shadowc_vssmBlocker(searchRect, r.d); SHADOWC_NAIVE_VSSM_RETURN(zb)
+#if SHADOWC_CONTACT
+  // sec. 6.4: blocker and receiver nearly touch; the SAT is least precise there and the penumbra
+  // is small, so a few bilinear PCF taps are both cheaper and more accurate. Detected on eq. 4's
+  // blocker depth, or on z_avg (the plain mean depth of the search region) when it lies just in
+  // front of d: right behind a flat occluder 1 - P -> 0 and eq. 4 finds no blocker (or a
+  // meaningless one), and the walk returned "lit" before the contact test (issue 9 defect 7;
+  // stability case contact_before_no_blocker_lit).
+  float zAvg = shadowc_rectMoments(searchRect, 0).x;
+  bool touching = r.d - zAvg > 0.0 && r.d - zAvg < SHADOWC_CONTACT_EPSILON;
+  if (touching || (zb >= 0.0 && abs(r.d - zb) < SHADOWC_CONTACT_EPSILON)) {
+#if SHADOWC_KERNEL_PENUMBRA
+    float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
+#else
+    float cw = SHADOWC_KERNEL_FIXED_TEXELS;
+#endif
+    return shadowc_pcfBilinearGrid(r.texel, cw, r.d, SHADOWC_CONTACT_N);
+  }
+#endif
   if (zb < 0.0) return 1.0;  // no blocker in the search region
 #if SHADOWC_KERNEL_PENUMBRA
   float w = shadowc_penumbraTexels(r, zb);
 #else
   float w = SHADOWC_KERNEL_FIXED_TEXELS;
-#endif
-#if SHADOWC_CONTACT
-  // sec. 6.4: blocker and receiver nearly touch; the SAT is least precise here and the penumbra
-  // is small, so a few bilinear PCF taps are both cheaper and more accurate.
-  if (abs(r.d - zb) < SHADOWC_CONTACT_EPSILON) return shadowc_pcfBilinearGrid(r.texel, w, r.d, SHADOWC_CONTACT_N);
 #endif
   return shadowc_vssmVisibility(shadowc_kernelRect(r.texel, w), r.d);
 }

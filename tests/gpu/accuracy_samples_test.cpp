@@ -1,4 +1,5 @@
-// Every sample filter of samples/filters/ on three (or four) built-in scenes against the Embree
+// Every sample filter of samples/filters/ on three (or four; four samples also on the real-mesh
+// scenes duck, spider, engine) built-in scenes against the Embree
 // ground truth: per technique and scene, bounds on RMSE and on the light-bleeding fraction, and
 // no NaN/Inf or out-of-range visibility. Small sizes keep it fast: 128^2 screen, 512^2 map, 8x8
 // reference light samples (cached under the build dir). The bounds are the measured values

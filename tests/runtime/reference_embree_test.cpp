@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <fstream>
 
 #include "runtime/reference/cpu_gbuffer.h"
@@ -13,37 +14,101 @@
 namespace shadowc::rt {
 namespace {
 
-// two_planes: light 1x1 at y = 6, occluder 2x2 at y = 2, floor at y = 0. Seen from floor point
-// (px, 0, pz), the occluder projects onto the light plane (scale 3 about p) as
-// [-3 - 2 px, 3 - 2 px] x [-3 - 2 pz, 3 - 2 pz]; visible = 1 - overlap with [-0.5, 0.5]^2.
-double twoPlanesExact(double px, double pz) {
-  auto overlap = [](double p) { return std::max(0.0, std::min(0.5, 3 - 2 * p) - std::max(-0.5, -3 - 2 * p)); };
-  return 1.0 - overlap(px) * overlap(pz);
+// two_planes: light L x L at y = 6 (L = 1 in the scene), occluder 2x2 at y = 2, floor at y = 0.
+// Seen from floor point (px, 0, pz), the occluder projects onto the light plane (scale 3 about
+// p) as [-3 - 2 px, 3 - 2 px] x [-3 - 2 pz, 3 - 2 pz]; the hidden part of the light is its
+// overlap with [-L/2, L/2]^2, an axis-aligned rectangle.
+
+// Integral of h^2 / (x^2 + y^2 + h^2)^2 (= cos_r cos_l / r^2 for a floor point and a parallel
+// light h above) over [0, X] x [0, Y] of the light plane, relative to the point: pi times the
+// form factor of a parallel rectangle with one corner above the point (Howell's catalogue,
+// C-11). Odd in X and in Y, so any rectangle is four corner terms.
+double cornerIntegral(double X, double Y, double h) {
+  const double a = X / h, b = Y / h, sa = std::sqrt(1 + a * a), sb = std::sqrt(1 + b * b);
+  return 0.5 * (a / sa * std::atan(b / sa) + b / sb * std::atan(a / sb));
+}
+double rectIntegral(double x0, double x1, double z0, double z1, double h) {
+  return cornerIntegral(x1, z1, h) - cornerIntegral(x0, z1, h) - cornerIntegral(x1, z0, h) + cornerIntegral(x0, z0, h);
 }
 
-TEST(ReferenceEmbree, TwoPlanesMatchesTheAnalyticVisibility) {
-  const Scene s = loadScene("two_planes");
-  const int n = 32;
-  double worst = 0;
-  for (double px = 0.0; px <= 2.0; px += 0.0625) {
-    const double pz = 0.3 * px;
-    const double traced = referenceVisibilityAt(s, {float(px), 0, float(pz)}, {0, 1, 0}, n, uint64_t(px * 1000));
-    worst = std::max(worst, std::abs(traced - twoPlanesExact(px, pz)));
+// The exact reference of either measure at floor point (px, 0, pz) for light side L.
+double twoPlanesExact(double px, double pz, double L = 1, ReferenceMeasure m = ReferenceMeasure::ShadowingTerm) {
+  const double hl = 0.5 * L;
+  const double x0 = std::max(-hl, -3 - 2 * px), x1 = std::min(hl, 3 - 2 * px);
+  const double z0 = std::max(-hl, -3 - 2 * pz), z1 = std::min(hl, 3 - 2 * pz);
+  if (x1 <= x0 || z1 <= z0) return 1.0;
+  if (m == ReferenceMeasure::LightFraction) return 1.0 - (x1 - x0) * (z1 - z0) / (L * L);
+  return 1.0 -
+         rectIntegral(x0 - px, x1 - px, z0 - pz, z1 - pz, 6) / rectIntegral(-hl - px, hl - px, -hl - pz, hl - pz, 6);
+}
+
+TEST(ReferenceEmbree, TwoPlanesMatchesTheClosedFormShadowingTerm) {
+  for (const double L : {1.0, 4.0}) {
+    SCOPED_TRACE(L);
+    Scene s = loadScene("two_planes");
+    s.light.width = float(L);
+    const int n = 32;
+    for (const ReferenceMeasure m : {ReferenceMeasure::ShadowingTerm, ReferenceMeasure::LightFraction}) {
+      SCOPED_TRACE(referenceMeasureName(m));
+      double worst = 0;
+      for (double px = 0.0; px <= 2.0 + 0.5 * L; px += 0.0625) {
+        const double pz = 0.3 * px;
+        const double traced = referenceVisibilityAt(s, {float(px), 0, float(pz)}, {0, 1, 0}, n, uint64_t(px * 1000), m);
+        worst = std::max(worst, std::abs(traced - twoPlanesExact(px, pz, L, m)));
+      }
+      // Stratified sampling: an edge crossing the light touches n strata of about 1/n^2 each
+      // (weights vary by less than 2x over the light).
+      EXPECT_LT(worst, 1.0 / n);
+    }
   }
-  // Stratified sampling: an edge crossing the light touches n strata of 1/n^2 each.
-  EXPECT_LT(worst, 1.0 / n);
-  // Sibling: the check can fail — a light twice as wide gives a visibly different answer.
-  Scene wide = s;
+  // Siblings: the check can fail. The weighting matters under a large light (the penumbra
+  // point where the edge halves the light: 0.570 weighted, 0.5 unweighted) ...
+  Scene large = loadScene("two_planes");
+  large.light.width = 4;
+  EXPECT_GT(std::abs(referenceVisibilityAt(large, {1.5f, 0, 0}, {0, 1, 0}, 32, 0, ReferenceMeasure::LightFraction) -
+                     twoPlanesExact(1.5, 0, 4)),
+            0.06);
+  // ... and a light twice as wide gives a visibly different answer.
+  Scene wide = loadScene("two_planes");
   wide.light.width = 2;
-  EXPECT_GT(std::abs(referenceVisibilityAt(wide, {1.8f, 0, 0}, {0, 1, 0}, n) - twoPlanesExact(1.8, 0)), 0.1);
+  EXPECT_GT(std::abs(referenceVisibilityAt(wide, {1.8f, 0, 0}, {0, 1, 0}, 32) - twoPlanesExact(1.8, 0)), 0.1);
+}
+
+// A lone box under a light four times its size: a point on a side face has 3/8 of the light in
+// front of its tangent plane and nothing between it and that part, so its shadowing term is
+// exactly 1. The light fraction counts the 5/8 behind the face (rays that hit the box itself)
+// as shadow.
+TEST(ReferenceEmbree, LoneBoxFaceSeesPartOfALargeLightAndIsFullyLit) {
+  const Scene s = parseScene(R"({
+    "camera": { "eye": [4, 3, 4], "target": [0, 0, 0] },
+    "light": { "position": [0, 3, 0], "direction": [0, -1, 0], "size": 4 },
+    "objects": [ { "type": "box", "size": 1 } ]
+  })",
+                             "lone_box.json", {});
+  for (const int n : {8, 32}) {
+    EXPECT_EQ(referenceVisibilityAt(s, {0.5f, 0, 0}, {1, 0, 0}, n), 1.0f) << n;
+    EXPECT_EQ(referenceVisibilityAt(s, {0.1f, 0, -0.5f}, {0, 0, -1}, n), 1.0f) << n;
+    EXPECT_EQ(referenceVisibilityAt(s, {0.2f, 0.5f, 0.3f}, {0, 1, 0}, n), 1.0f) << n;  // the top face
+  }
+  // Sibling: the old measure is far from 1 on the same face (3/8 of the samples reach it).
+  EXPECT_NEAR(referenceVisibilityAt(s, {0.5f, 0, 0}, {1, 0, 0}, 32, 0, ReferenceMeasure::LightFraction), 0.375,
+              1.0 / 32);
+  // A face with no light in front of its plane receives none: 0 (what a shadow map says too).
+  EXPECT_EQ(referenceVisibilityAt(s, {0.1f, -0.5f, 0.2f}, {0, -1, 0}, 8), 0.0f);
 }
 
 TEST(ReferenceEmbree, EdgeThroughTheLightCentreHidesHalfOfRectAndDisk) {
   // Floor point whose occluder edge projects through the light centre: 3 - 2 px = 0 -> px = 1.5.
+  // Half of the samples are hidden; the shadowing term weighs the nearer, visible half more
+  // (0.519 for the rectangle).
   Scene s = loadScene("two_planes");
   for (LightShape shape : {LightShape::Rect, LightShape::Disk}) {
     s.light.shape = shape;
-    EXPECT_NEAR(referenceVisibilityAt(s, {1.5f, 0, 0}, {0, 1, 0}, 32), 0.5, 1.0 / 32);
+    EXPECT_NEAR(referenceVisibilityAt(s, {1.5f, 0, 0}, {0, 1, 0}, 32, 0, ReferenceMeasure::LightFraction), 0.5,
+                1.0 / 32);
+    const float term = referenceVisibilityAt(s, {1.5f, 0, 0}, {0, 1, 0}, 32);
+    EXPECT_GT(term, 0.5f);
+    EXPECT_LT(term, 0.5f + 1.0f / 32);
   }
   // Under the centre: all hidden; far away: all visible.
   EXPECT_EQ(referenceVisibilityAt(s, {0, 0, 0}, {0, 1, 0}, 8), 0.0f);
@@ -156,6 +221,12 @@ TEST_F(ReferenceImage, CacheIsReusedAndKeyedByContent) {
   Scene other = scene;
   other.light.width = 1.5f;
   EXPECT_FALSE(traceReference(other, gbuffer.positions, gbuffer.normals, 64, 64, 4, dir).fromCache);
+  // The measure is part of the key: the light fraction never reads a shadowing-term entry.
+  const ReferenceResult fraction = traceReference(scene, gbuffer.positions, gbuffer.normals, 64, 64, 4, dir, {}, true,
+                                                  ReferenceMeasure::LightFraction);
+  EXPECT_FALSE(fraction.fromCache);
+  EXPECT_NE(fraction.cacheFile, first.cacheFile);
+  EXPECT_NE(fraction.visibility, first.visibility);
   // A damaged file is ignored and rewritten, never trusted.
   {
     std::fstream f(first.cacheFile, std::ios::in | std::ios::out | std::ios::binary);

@@ -13,7 +13,7 @@ TEST(SceneBuiltin, HasEveryRequiredHardCase) {
   const auto names = builtinSceneNames();
   for (const char* required :
        {"two_planes", "stacked_planes", "contact", "overlapping_occluders", "large_penumbra", "small_penumbra",
-        "depth_range", "grazing", "thin_occluders", "empty", "fully_occluded", "mesh"}) {
+        "depth_range", "grazing", "thin_occluders", "empty", "fully_occluded", "mesh", "duck", "spider", "engine"}) {
     EXPECT_NE(std::find(names.begin(), names.end(), required), names.end()) << required;
     EXPECT_FALSE(builtinSceneDescription(required).empty()) << required;
   }
@@ -59,6 +59,24 @@ TEST(SceneBuiltin, MeshSceneLoadsTheKnotThroughAssimp) {
   double outward = 0;
   for (size_t i = 0; i < it->positions.size(); ++i) outward += glm::dot(it->normals[i], it->positions[i] - c);
   EXPECT_GT(outward, 0.0);
+}
+
+// The real-mesh scenes load Debian's assimp-testmodels files (COLLADA, OBJ, binary glTF 2) through
+// assimp, with every part kept: the triangle counts are those of the files, and each model
+// stands on the floor (lowest vertex within 2 % of its height above y = 0).
+TEST(SceneBuiltin, RealMeshScenesLoadTheDebianModelsThroughAssimp) {
+  for (const auto& [name, triangles] :
+       std::vector<std::pair<std::string, size_t>>{{"duck", 4212}, {"spider", 1368}, {"engine", 121496}}) {
+    SCOPED_TRACE(name);
+    const Scene s = loadScene(name);
+    const auto it = std::find_if(s.meshes.begin(), s.meshes.end(), [&](const Mesh& m) { return m.name == name; });
+    ASSERT_NE(it, s.meshes.end());
+    EXPECT_EQ(it->indices.size() / 3, triangles);
+    float lo = 1e30f, hi = -1e30f;
+    for (const glm::vec3& p : it->positions) lo = std::min(lo, p.y), hi = std::max(hi, p.y);
+    EXPECT_GE(lo, -0.02f * (hi - lo));
+    EXPECT_LE(lo, 0.02f * (hi - lo));
+  }
 }
 
 TEST(SceneBuiltin, ContentHashIsStableAndSeesEveryField) {

@@ -44,5 +44,7 @@ void addSatCases(std::vector<StabilityCase>& out);
 void addEstimatorCases(std::vector<StabilityCase>& out);
 void addGeometryCases(std::vector<StabilityCase>& out);
 void addNaiveCases(std::vector<StabilityCase>& out);
+void addEarlyOutCases(std::vector<StabilityCase>& out);
+void addContactCases(std::vector<StabilityCase>& out);
 
 }  // namespace shadowc::validation

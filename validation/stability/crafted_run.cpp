@@ -43,13 +43,15 @@ FilterSpec specFromSource(const std::string& text, const std::string& name) {
   return *checked.spec;
 }
 
-const CompiledFilter& compileCached(const FilterSpec& spec) {
+const CompiledFilter& compileCached(const FilterSpec& spec, bool naiveDemo) {
   CompileCache& c = cache();
   std::lock_guard<std::mutex> lock(c.mutex);
   const std::string key = specToJson(spec).dump() + (spec.naiveUnguarded ? "|naive" : "");
   auto it = c.filters.find(key);
   if (it != c.filters.end()) return *it->second;
-  const driver::Result compiled = driver::compileSpec(spec);
+  driver::Options options;
+  options.checkBuiltSpec = !naiveDemo;
+  const driver::Result compiled = driver::compileSpec(spec, options);
   if (!compiled.artifact)
     throw std::runtime_error(fmt::format("filter {} does not compile:\n{}", spec.name, compiled.log));
   auto cf = std::make_unique<CompiledFilter>();

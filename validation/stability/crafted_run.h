@@ -33,7 +33,8 @@ struct CompiledFilter {
 
 // Compiles once per distinct spec per process (the spec JSON plus the debug flags is the key).
 // Throws std::runtime_error with the compiler log when the filter does not compile.
-const CompiledFilter& compileCached(const FilterSpec& spec);
+// `naiveDemo`: the spec is a naive form the checker rejects on purpose (driver::Options::checkBuiltSpec).
+const CompiledFilter& compileCached(const FilterSpec& spec, bool naiveDemo = false);
 
 // Checked spec from DSL text; throws std::runtime_error with the diagnostics on errors.
 FilterSpec specFromSource(const std::string& text, const std::string& name);

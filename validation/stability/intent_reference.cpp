@@ -21,6 +21,15 @@ double chebyshev(double mean, double meanSq, double t, double minVariance) {
   const double denom = variance + dt * dt;
   return denom > 0 ? unit(variance / denom) : 0.0;
 }
+// The minimum variance of linear moments: the spec's, raised for an int32 SAT to the variance
+// noise of its 16.16 box means (templates/lookup/sat.glsl, shadowc_satVarianceFloor).
+double satVarianceFloor(const FilterSpec& s) {
+  const bool int32Sat =
+      s.representation == Representation::Moments && s.storage.sat == SatKind::Int32 && s.moments.warp == Warp::Linear;
+  return int32Sat ? 2.4e-5 : 0.0;
+}
+double minVarianceOf(const FilterSpec& s) { return std::max(s.moments.minVariance, satVarianceFloor(s)); }
+
 double reduceBleeding(const FilterSpec& s, double p) {
   const double a = std::clamp(s.moments.bleedingReduction, 0.0, 0.999);
   return a > 0 ? clamp01((p - a) / (1 - a)) : p;
@@ -110,7 +119,7 @@ class Evaluator {
   double estimate(const std::vector<double>& m, double d, double minVariance) const {
     switch (s_.moments.warp) {
       case Warp::Linear:
-        return reduceBleeding(s_, chebyshev(m[0], m[1], d, minVariance));
+        return reduceBleeding(s_, chebyshev(m[0], m[1], d, std::max(minVariance, satVarianceFloor(s_))));
       case Warp::Exp: {
         const double c = s_.moments.positiveExponent;
         return unit(m[0] * std::exp(-c * (d - 1)));
@@ -243,7 +252,7 @@ class Evaluator {
     double a1 = 0, z1 = 0;
     if (a.vsm > 0) {
       const double mean = a.ex / a.vsm, meanSq = a.ex2 / a.vsm;
-      const double p = chebyshev(mean, meanSq, d, s_.moments.minVariance);
+      const double p = chebyshev(mean, meanSq, d, minVarianceOf(s_));
       if (1 - p > 1e-4) {
         z1 = std::clamp((mean - p * d) / (1 - p), 0.0, d);
         a1 = (1 - p) * a.vsm;
@@ -258,18 +267,22 @@ class Evaluator {
     walk(rect, s_.kernel.subdivision,
          s_.kernel.subdivision == Subdivision::Quadtree ? s_.kernel.quadtreeHeight : s_.kernel.uniformN, d, a);
     double l = 1;
-    if (a.vsm > 0) l = reduceBleeding(s_, chebyshev(a.ex / a.vsm, a.ex2 / a.vsm, d, s_.moments.minVariance));
+    if (a.vsm > 0) l = reduceBleeding(s_, chebyshev(a.ex / a.vsm, a.ex2 / a.vsm, d, minVarianceOf(s_)));
     const double l1 = a.pcf > 0 ? 1 - a.pcfOcc / a.pcf : 1;
     const double total = a.vsm + a.lit + a.pcf;
     if (!(total > 0)) return 1;
     return unit((l * a.vsm + a.lit + l1 * a.pcf) / total);
   }
 
+  // Exact over every texel that can change the result: the kernel, one texel for bilinear taps
+  // and the blur's radius (a blurred moment holds texels that far away).
   double earlyOut(const std::array<int, 4>& rect, double d) const {  // -1 = undecided
     const int last = int(map_.size) - 1;
+    const bool blurred = s_.representation == Representation::Moments && s_.prefilter.blur != BlurKind::None;
+    const int g = 1 + (blurred ? std::max(0, s_.prefilter.blurRadius) : 0);
     double lo = INFINITY, hi = -INFINITY;
-    for (int y = std::max(rect[1] - 1, 0); y <= std::min(rect[3] + 1, last); ++y)
-      for (int x = std::max(rect[0] - 1, 0); x <= std::min(rect[2] + 1, last); ++x) {
+    for (int y = std::max(rect[1] - g, 0); y <= std::min(rect[3] + g, last); ++y)
+      for (int x = std::max(rect[0] - g, 0); x <= std::min(rect[2] + g, last); ++x) {
         lo = std::min(lo, double(map_.at(x, y)));
         hi = std::max(hi, double(map_.at(x, y)));
       }

@@ -67,14 +67,13 @@ void countValues(CaseResult& r, const std::vector<float>& values, double lo, dou
 
 void settle(CaseResult& r) {
   const bool clean = r.nonFinite == 0 && r.outOfRange == 0 && !(r.worstError > r.bound);
-  r.pass = r.naive ? !clean : (clean || r.limitation);
-  if (r.limitation && !clean) r.detail = "documented limitation; " + r.detail;
+  r.pass = r.naive ? !clean : clean;
 }
 
 CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, const DepthMap& map,
                     const std::vector<Receiver>& receivers, const LightFrame& light) {
   r.filter = spec.name;
-  const CompiledFilter& cf = compileCached(spec);
+  const CompiledFilter& cf = compileCached(spec, r.naive);
   const CraftedResult run = runCrafted(ctx.vk, cf, map, receivers, light);
   countValues(r, run.visibility);
   const IntentReference reference(spec, map, light);
@@ -95,24 +94,6 @@ CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, con
   return r;
 }
 
-namespace {
-// Failures the suite found that are not fixed yet (owners named in docs/stability.md). A row
-// listed here still runs and reports its numbers; only when it fails is it not counted.
-const std::map<std::string, std::string>& knownIssues() {
-  static const std::map<std::string, std::string> issues = {
-      {"exponent_limit_evsm4_sat_fp32_centered/evsm4_sat_fp32_centered",
-       "the checker's SAT exponent limit (42 - ln(W^2)/2) prevents overflow but not cancellation: box "
-       "sums of e-^2 ~ 1e36 lose every digit of a small box"},
-      {"depth_range_0.001/vssm_uniform",
-       "penumbra width from view-space z differences (zr - zb ~ 3e-4 at z ~ 1) loses ~3 digits in fp32"},
-      {"quadtree_height_1_single_texel_leaves/vssm_quadtree_h1", "not yet explained (lookup or reference)"},
-      {"exponent_limit_evsm4_fp16/evsm4_fp16_past_limit",
-       "demonstration not effective yet: the saturated fp16 negative moment does not change these receivers"},
-  };
-  return issues;
-}
-}  // namespace
-
 std::vector<CaseResult> runCase(SuiteContext& ctx, const StabilityCase& c, const FilterSpec* override) {
   std::vector<CaseResult> out;
   auto runOne = [&](const FilterSpec& spec) {
@@ -120,11 +101,6 @@ std::vector<CaseResult> runCase(SuiteContext& ctx, const StabilityCase& c, const
       CaseResult r = c.run(ctx, spec);
       r.caseName = c.name;
       if (r.filter.empty()) r.filter = spec.name;
-      const auto known = knownIssues().find(r.caseName + "/" + r.filter);
-      if (known != knownIssues().end() && !r.pass) {
-        r.knownIssue = known->second;
-        r.pass = true;
-      }
       out.push_back(std::move(r));
     } catch (const std::exception& e) {
       CaseResult r;
@@ -151,6 +127,8 @@ const std::vector<StabilityCase>& stabilityCases() {
     addEstimatorCases(out);
     addGeometryCases(out);
     addNaiveCases(out);
+    addEarlyOutCases(out);
+    addContactCases(out);
     return out;
   }();
   return cases;
@@ -169,12 +147,9 @@ std::string markdownTable(const std::vector<CaseResult>& results) {
       "| case | filter | worst error | bound | NaN/Inf | out of [0,1] | result |\n"
       "|---|---|---|---|---|---|---|\n";
   for (const CaseResult& r : results)
-    out += fmt::format(
-        "| {} | {}{} | {} | {} | {} | {} | {} |\n", r.caseName, r.filter, r.naive ? " (naive)" : "", num(r.worstError),
-        num(r.bound), r.nonFinite, r.outOfRange,
-        !r.knownIssue.empty() ? "KNOWN ISSUE"
-        : r.naive             ? (r.pass ? "fails as expected" : "UNEXPECTEDLY PASSES")
-                  : (r.limitation && r.worstError > r.bound ? "limitation (documented)" : (r.pass ? "pass" : "FAIL")));
+    out += fmt::format("| {} | {}{} | {} | {} | {} | {} | {} |\n", r.caseName, r.filter, r.naive ? " (naive)" : "",
+                       num(r.worstError), num(r.bound), r.nonFinite, r.outOfRange,
+                       r.naive ? (r.pass ? "fails as expected" : "UNEXPECTEDLY PASSES") : (r.pass ? "pass" : "FAIL"));
   return out;
 }
 
@@ -194,7 +169,6 @@ nlohmann::ordered_json resultsJson(const std::vector<CaseResult>& results) {
     j["non_finite"] = r.nonFinite;
     j["out_of_range"] = r.outOfRange;
     j["pass"] = r.pass;
-    j["known_issue"] = r.knownIssue;
     j["detail"] = r.detail;
     failed += r.pass ? 0 : 1;
     cases.push_back(std::move(j));

@@ -179,20 +179,20 @@ vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
 }
 #line 36
 float shadowc_estimate(vec4 m, float d, float minVariance){
-#line 42
+#line 45
   return shadowc_evsm(m, d, minVariance);
-#line 46
+#line 49
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 54
+#line 57
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 59
+#line 62
   const float delta = 0.02;
   if(j + 1 < 3 && d > shadowc_split(j + 1)- delta){
     float t = clamp((d -(shadowc_split(j + 1)- delta))/(2.0 * delta), 0.0, 1.0);
@@ -204,11 +204,11 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
 
   return v;
 }
-#line 73
+#line 76
 float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 80
+#line 83
   float w = shadowc_searchTexels(r);
-#line 85
+#line 88
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
 #line 42 "lookup/shadowc_lookup.glsl"
@@ -226,13 +226,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 78
+#line 81
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 89
+#line 92
   float v = shadowc_momentsTechnique(r);
-#line 99
+#line 102
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

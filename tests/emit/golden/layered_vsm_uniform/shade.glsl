@@ -164,20 +164,20 @@ vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
 }
 #line 36
 float shadowc_estimate(vec4 m, float d, float minVariance){
-
+#line 41
   return shadowc_reduceBleeding(shadowc_chebyshev(m . x, m . y, d, minVariance));
-#line 46
+#line 49
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 54
+#line 57
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 59
+#line 62
   const float delta = 0.02;
   if(j + 1 < 4 && d > shadowc_split(j + 1)- delta){
     float t = clamp((d -(shadowc_split(j + 1)- delta))/(2.0 * delta), 0.0, 1.0);
@@ -189,9 +189,9 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
 
   return v;
 }
-#line 73
+#line 76
 float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 83
+#line 86
   float w = 1.0;
 
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
@@ -211,13 +211,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 78
+#line 81
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 89
+#line 92
   float v = shadowc_momentsTechnique(r);
-#line 99
+#line 102
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -163,13 +163,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 78
+#line 81
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 96
-  float v = shadowc_pcf(r, 7.0);
 #line 99
+  float v = shadowc_pcf(r, 7.0);
+#line 102
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

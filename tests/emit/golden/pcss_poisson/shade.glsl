@@ -189,13 +189,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 78
+#line 81
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 91
+#line 94
   float v = shadowc_pcss(r);
-#line 99
+#line 102
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

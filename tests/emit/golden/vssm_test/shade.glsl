@@ -110,7 +110,7 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
 }
 #line 16 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/minmax.glsl"
-#line 13
+#line 17
 vec2 shadowc_minMaxOfRect(ivec4 rect){
   int w = max(rect . z - rect . x, rect . w - rect . y)+ 1;
   int level = w > 1 ? findMSB(w - 1)+ 1 : 0;
@@ -118,13 +118,16 @@ vec2 shadowc_minMaxOfRect(ivec4 rect){
   ivec2 last = max(textureSize(shadowc_minMaxPyramid, level)- 1, ivec2(0));
   ivec2 lo = clamp(rect . xy >> level, ivec2(0), last);
   ivec2 hi = clamp(rect . zw >> level, ivec2(0), last);
-  vec2 a = texelFetch(shadowc_minMaxPyramid, lo, level). rg;
-  vec2 b = texelFetch(shadowc_minMaxPyramid, ivec2(hi . x, lo . y), level). rg;
-  vec2 c = texelFetch(shadowc_minMaxPyramid, ivec2(lo . x, hi . y), level). rg;
-  vec2 e = texelFetch(shadowc_minMaxPyramid, hi, level). rg;
-  return vec2(min(min(a . x, b . x), min(c . x, e . x)), max(max(a . y, b . y), max(c . y, e . y)));
+  vec2 mm = texelFetch(shadowc_minMaxPyramid, lo, level). rg;
+#line 27
+  for(int y = lo . y;y <= hi . y;++ y)
+    for(int x = lo . x;x <= hi . x;++ x){
+      vec2 c = texelFetch(shadowc_minMaxPyramid, ivec2(x, y), level). rg;
+      mm = vec2(min(mm . x, c . x), max(mm . y, c . y));
+    }
+  return mm;
 }
-#line 28
+#line 36
 float shadowc_earlyOut(ivec4 rect, float d){
   vec2 mm = shadowc_minMaxOfRect(rect);
   if(mm . x >= d)return 1.0;
@@ -149,12 +152,14 @@ float shadowc_reduceBleeding(float p){
 }
 #line 30 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/sat.glsl"
-#line 18
+#line 24
+const float shadowc_satVarianceFloor = 2.4e-5;
+#line 30
 uvec4 shadowc_summedCorner(int x, int y, int layer){
   if(x < 0 || y < 0)return uvec4(0u);
   return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
 }
-#line 30
+#line 42
 vec4 shadowc_summedMean(ivec4 rect, int layer){
   float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
   area = max(area, 1.0);
@@ -162,7 +167,7 @@ vec4 shadowc_summedMean(ivec4 rect, int layer){
   uvec4 sum = shadowc_summedCorner(rect . z, rect . w, layer)- shadowc_summedCorner(rect . x - 1, rect . w, layer)-
               shadowc_summedCorner(rect . z, rect . y - 1, layer)+ shadowc_summedCorner(rect . x - 1, rect . y - 1, layer);
   return vec4(sum)/(65536.0 * area);
-#line 46
+#line 58
 }
 #line 39 "lookup/shadowc_lookup.glsl"
 
@@ -214,27 +219,29 @@ vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
 }
 #line 36
 float shadowc_estimate(vec4 m, float d, float minVariance){
+#line 39
+  minVariance = max(minVariance, shadowc_satVarianceFloor);
 
   return shadowc_reduceBleeding(shadowc_chebyshev(m . x, m . y, d, minVariance));
-#line 46
+#line 49
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 54
+#line 57
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 68
+#line 71
   return v;
 }
-#line 73
+#line 76
 float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 80
+#line 83
   float w = shadowc_searchTexels(r);
-#line 85
+#line 88
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
 #line 42 "lookup/shadowc_lookup.glsl"
@@ -254,7 +261,9 @@ float shadowc_aPcfDepth;
 void shadowc_vssmBegin(ivec4 root, float d){
   shadowc_vRoot = root;
   shadowc_vD = d;
-  shadowc_vMinVariance = 1e-05;
+
+  shadowc_vMinVariance = max(1e-05, shadowc_satVarianceFloor);
+#line 48
   shadowc_aEx = 0.0;
   shadowc_aEx2 = 0.0;
   shadowc_aVsmArea = 0.0;
@@ -263,14 +272,14 @@ void shadowc_vssmBegin(ivec4 root, float d){
   shadowc_aPcfOcc = 0.0;
   shadowc_aPcfDepth = 0.0;
 }
-#line 54
+#line 58
 ivec4 shadowc_subRect(ivec3 node){
   ivec2 size = shadowc_vRoot . zw - shadowc_vRoot . xy + 1;
   ivec2 lo = shadowc_vRoot . xy +(node . xy * size)/ node . z;
   ivec2 hi = shadowc_vRoot . xy +((node . xy + 1)* size)/ node . z - 1;
   return ivec4(lo, hi);
 }
-#line 62
+#line 66
 int shadowc_qtClassify(ivec3 node){
   ivec4 rect = shadowc_subRect(node);
   if(rect . z < rect . x || rect . w < rect . y)return 0;
@@ -289,26 +298,26 @@ int shadowc_qtClassify(ivec3 node){
   }
   return 1;
 }
-#line 82
+#line 86
 void shadowc_qtResolveLeaf(ivec3 node){
   ivec4 rect = shadowc_subRect(node);
   if(rect . z < rect . x || rect . w < rect . y)return;
   float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
-#line 105
+#line 109
   shadowc_aLitArea += area;
 
 }
-#line 110
+#line 114
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassify(node)== 1;}
 void shadowc_qtLeaf(ivec3 node){
   if(shadowc_qtClassify(node)== 1)shadowc_qtResolveLeaf(node);
 }
-#line 116
+#line 120
 void shadowc_uniformWalk(int den){
   for(int j = 0;j < den;++ j)
     for(int i = 0;i < den;++ i)shadowc_qtLeaf(ivec3(i, j, den));
 }
-#line 125
+#line 129
 void shadowc_qtWalk(int height){
   int node = 0;
   for(int step = 0;step < 85 && node >= 0;++ step){
@@ -323,12 +332,12 @@ void shadowc_qtWalk(int height){
     node = shadowc_qtNext[node];
   }
 }
-#line 142
+#line 146
 float shadowc_vssmBlocker(ivec4 searchRect, float d){
   shadowc_vssmBegin(searchRect, d);
-#line 151
+#line 155
   shadowc_uniformWalk(5);
-#line 156
+#line 160
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -345,12 +354,12 @@ float shadowc_vssmBlocker(ivec4 searchRect, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 174
+#line 178
 float shadowc_vssmVisibility(ivec4 rect, float d){
   shadowc_vssmBegin(rect, d);
-#line 180
+#line 184
   shadowc_qtWalk(3);
-#line 187
+#line 191
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -362,11 +371,13 @@ float shadowc_vssmVisibility(ivec4 rect, float d){
 }
 
 float shadowc_vssm(ShadowcReceiver r){
-  float zb = shadowc_vssmBlocker(shadowc_kernelRect(r . texel, shadowc_searchTexels(r)), r . d);
+  ivec4 searchRect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
+  float zb = shadowc_vssmBlocker(searchRect, r . d);
+#line 222
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 210
+#line 228
   return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
 }
 #line 45 "lookup/shadowc_lookup.glsl"
@@ -384,24 +395,25 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 67
+#line 69
 ivec4 shadowc_influenceRect(ShadowcReceiver r){
 
   ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
-#line 73
+#line 75
   ivec2 last = shadowc_mapSize()- 1;
-  return ivec4(max(rect . xy - 1, ivec2(0)), min(rect . zw + 1, last));
+  const int grow = 1 + 0;
+  return ivec4(max(rect . xy - grow, ivec2(0)), min(rect . zw + grow, last));
 }
-#line 78
+#line 81
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   ShadowcReceiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 83
+#line 86
   float early = shadowc_earlyOut(shadowc_influenceRect(r), r . d);
   if(early >= 0.0)return early;
-#line 87
+#line 90
   float v = shadowc_vssm(r);
-#line 99
+#line 102
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"
