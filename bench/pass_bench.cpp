@@ -130,8 +130,8 @@ std::string fetchesPerPixel(const FilterSpec& s) {
   long long n = s.earlyOutMinMax ? 4 : 0;
   std::string how;
   if (!moments) {
-    const long long pcf = s.sampling.pattern == PcfPattern::Poisson ? s.sampling.taps
-                                                                     : 1LL * s.sampling.gridN * s.sampling.gridN;
+    const long long pcf =
+        s.sampling.pattern == PcfPattern::Poisson ? s.sampling.taps : 1LL * s.sampling.gridN * s.sampling.gridN;
     const long long search = s.blocker.kind == BlockerKind::Search ? s.blocker.taps : 0;
     return fmt::format("{} ({} search + {} pcf{})", n + pcf + search, search, pcf, n ? " + 4 minmax" : "");
   }
@@ -145,7 +145,7 @@ std::string fetchesPerPixel(const FilterSpec& s) {
                                 ? boxes(s.blocker.subdivision, s.blocker.uniformM, s.blocker.quadtreeHeight)
                                 : 0;
   const long long kernel = boxes(s.kernel.subdivision, s.kernel.uniformN, s.kernel.quadtreeHeight);
-  const long long leaves = s.kernel.subdivision == Subdivision::Quadtree ? (1LL << (2 * s.kernel.quadtreeHeight))
+  const long long leaves = s.kernel.subdivision == Subdivision::Quadtree  ? (1LL << (2 * s.kernel.quadtreeHeight))
                            : s.kernel.subdivision == Subdivision::Uniform ? 1LL * s.kernel.uniformN * s.kernel.uniformN
                                                                           : 1;
   const long long fallback = s.fallback.pcf ? leaves * s.fallback.n * s.fallback.n : 0;
@@ -219,7 +219,8 @@ int main(int argc, char** argv) try {
     copyIn.width = copyIn.height = kScreen;
     copyIn.frame = scene->setup.frame;
     const rt::RunOutputs c = rt::runPasses(ctx, copies, copyIn, options);
-    for (size_t i = 0; i < copyFormats().size(); ++i) anchor[map][copyFormats()[i].format] = c.timing->passes[i].medianMs;
+    for (size_t i = 0; i < copyFormats().size(); ++i)
+      anchor[map][copyFormats()[i].format] = c.timing->passes[i].medianMs;
 
     for (size_t f = 0; f < filters.size(); ++f) {
       const driver::Artifact& a = filters[f];
@@ -233,11 +234,13 @@ int main(int argc, char** argv) try {
           shades[f].rmse[map] = r.metrics.rmse;
           continue;
         }
-        auto [it, fresh] = byKind.try_emplace(pass.kind, writtenFormat(a.manifest, pass).value_or(ImageFormat::R32F), 0.0);
+        auto [it, fresh] =
+            byKind.try_emplace(pass.kind, writtenFormat(a.manifest, pass).value_or(ImageFormat::R32F), 0.0);
         it->second.second += ms;
       }
       for (const auto& [kind, v] : byKind) {
-        auto row = std::find_if(rows.begin(), rows.end(), [&](const Row& x) { return x.filter == a.spec.name && x.kind == kind; });
+        auto row = std::find_if(rows.begin(), rows.end(),
+                                [&](const Row& x) { return x.filter == a.spec.name && x.kind == kind; });
         if (row == rows.end()) row = rows.insert(rows.end(), Row{a.spec.name, kind, v.first, {}});
         row->ms[map] = v.second;
       }
@@ -257,10 +260,12 @@ int main(int argc, char** argv) try {
     for (uint32_t map : sizes) fmt::print(" {:.2f} |", anchor[map][f.format]);
     fmt::print("\n");
   }
-  fmt::print("\n### Prefilter passes (kind = sum of that kind's passes: SAT = rows + columns, mips and min-max = "
-             "every level)\n\n");
+  fmt::print(
+      "\n### Prefilter passes (kind = sum of that kind's passes: SAT = rows + columns, mips and min-max = "
+      "every level)\n\n");
   header("filter | pass kind | written format");
-  std::sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return std::tie(a.kind, a.filter) < std::tie(b.kind, b.filter); });
+  std::sort(rows.begin(), rows.end(),
+            [](const Row& a, const Row& b) { return std::tie(a.kind, a.filter) < std::tie(b.kind, b.filter); });
   for (const Row& r : rows) {
     fmt::print("| {} | {} | {}", r.filter, r.kind, toString(r.format));
     for (uint32_t map : sizes) {
@@ -280,11 +285,14 @@ int main(int argc, char** argv) try {
         for (const auto& [map, ms] : r.ms) total[map] += ms;
     if (total.empty()) continue;
     fmt::print("| {} |", a.spec.name);
-    for (uint32_t map : sizes) fmt::print(" {:.2f} | {:.2f} |", total[map], total[map] / anchor[map][ImageFormat::RG32F]);
+    for (uint32_t map : sizes)
+      fmt::print(" {:.2f} | {:.2f} |", total[map], total[map] / anchor[map][ImageFormat::RG32F]);
     fmt::print("\n");
   }
-  fmt::print("\n### Shade pass per pixel ({}² pixels; fetches per pixel: worst case from the spec)\n\n| filter | fetches / pixel |",
-             kScreen);
+  fmt::print(
+      "\n### Shade pass per pixel ({}² pixels; fetches per pixel: worst case from the spec)\n\n| filter | fetches / "
+      "pixel |",
+      kScreen);
   for (uint32_t map : sizes) fmt::print(" {}² map µs/pixel | RMSE |", map);
   fmt::print("\n|---|---|{}\n", repeat("---:|---:|", sizes.size()));
   const double pixels = double(kScreen) * kScreen;

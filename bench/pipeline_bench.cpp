@@ -61,11 +61,13 @@ std::vector<Source> largestSettings() {
   out.push_back({"max_uniform", "filter max_uniform {\n " + vssm +
                                     " blocker moments(uniform(m: 16))\n kernel uniform(n: 32)\n fallback pcf(8x8)\n "
                                     "contact pcf(8x8, epsilon: 0.01)\n early_out minmax\n}\n"});
-  out.push_back({"max_pcss_taps", "filter max_pcss_taps {\n depth\n blocker search(64, pattern: poisson)\n kernel "
-                                  "penumbra\n sampling poisson(64, rotate: stable)\n}\n"});
+  out.push_back({"max_pcss_taps",
+                 "filter max_pcss_taps {\n depth\n blocker search(64, pattern: poisson)\n kernel "
+                 "penumbra\n sampling poisson(64, rotate: stable)\n}\n"});
   out.push_back({"max_pcf_grid", "filter max_pcf_grid {\n depth\n kernel fixed(63)\n sampling grid(16x16)\n}\n"});
-  out.push_back({"max_layers_lloyd", "filter max_layers_lloyd {\n moments linear(layers: 16, split: lloyd(iterations: "
-                                     "64), overlap: 0.25)\n storage fp32\n blur gaussian(radius: 32)\n}\n"});
+  out.push_back({"max_layers_lloyd",
+                 "filter max_layers_lloyd {\n moments linear(layers: 16, split: lloyd(iterations: "
+                 "64), overlap: 0.25)\n storage fp32\n blur gaussian(radius: 32)\n}\n"});
   out.push_back({"max_layers_sat", "filter max_layers_sat {\n moments linear(layers: 16)\n storage sat(fp32)\n}\n"});
   return out;
 }
@@ -150,9 +152,10 @@ int main(int argc, char** argv) try {
   const int limit = argc > 1 ? std::max(1, std::atoi(argv[1])) : 30;
   const std::string only = argc > 2 ? argv[2] : "";
   const int n = argc > 3 ? std::max(1, std::atoi(argv[3])) : 3;
-  fmt::print("pipeline_bench: driver compile at -O (median of {}), lavapipe pipeline creation and first dispatch per "
-             "pass (JIT + one run; 64² screen, 512² map), device limit {} s per filter\n\n",
-             n, limit);
+  fmt::print(
+      "pipeline_bench: driver compile at -O (median of {}), lavapipe pipeline creation and first dispatch per "
+      "pass (JIT + one run; 64² screen, 512² map), device limit {} s per filter\n\n",
+      n, limit);
   fmt::print("| filter | driver compile ms | pipeline create ms | first dispatch per pass (ms) | JIT total s |\n");
   fmt::print("|---|---:|---:|---|---:|\n");
   for (const Source& s : samples(only)) {
@@ -185,7 +188,8 @@ int main(int argc, char** argv) try {
       perPass += fmt::format("{}{} {:.0f}", perPass.empty() ? "" : ", ", name, ms);
       total += ms;
     }
-    fmt::print("| {} | {:.0f} | {:.0f} | {} | {:.2f} |\n", s.name, median(times), create, perPass, (create + total) / 1000);
+    fmt::print("| {} | {:.0f} | {:.0f} | {} | {:.2f} |\n", s.name, median(times), create, perPass,
+               (create + total) / 1000);
     std::fflush(stdout);
   }
   return 0;
