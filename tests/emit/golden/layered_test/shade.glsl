@@ -206,9 +206,9 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
 }
 #line 76
 float shadowc_momentsTechnique(ShadowcReceiver r){
-#line 83
-  float w = shadowc_searchTexels(r);
-#line 88
+#line 86
+  float w = 3.0;
+
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
 #line 42 "lookup/shadowc_lookup.glsl"

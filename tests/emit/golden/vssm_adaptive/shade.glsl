@@ -365,27 +365,33 @@ void shadowc_uniformWalk(int den){
   for(int j = 0;j < den;++ j)
     for(int i = 0;i < den;++ i)shadowc_qtLeaf(ivec3(i, j, den));
 }
-#line 129
+#line 132
+ivec3 shadowc_qtNextNode(ivec3 n){
+  while(n . z > 1 &&(n . x & n . y & 1)== 1)n = ivec3(n . xy >> 1, n . z >> 1);
+  if(n . z <= 1)return ivec3(0);
+  int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
+  return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
+}
+#line 141
 void shadowc_qtWalk(int height){
-  int node = 0;
-  for(int step = 0;step < 85 && node >= 0;++ step){
-    ivec3 n = shadowc_qtNode[node];
+  ivec3 n = ivec3(0, 0, 1);
+  for(int step = 0;step < 85 && n . z > 0;++ step){
     if(shadowc_qtClassify(n)== 1){
-      if(n . z <(1 << height)&& shadowc_qtChild[node]>= 0){
-        node = shadowc_qtChild[node];
+      if(n . z <(1 << height)){
+        n = ivec3(2 * n . xy, 2 * n . z);
         continue;
       }
       shadowc_qtResolveLeaf(n);
     }
-    node = shadowc_qtNext[node];
+    n = shadowc_qtNextNode(n);
   }
 }
-#line 146
+#line 157
 float shadowc_vssmBlocker(ivec4 searchRect, float d){
   shadowc_vssmBegin(searchRect, d);
-#line 155
+#line 166
   shadowc_uniformWalk(5);
-#line 160
+#line 171
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -402,12 +408,12 @@ float shadowc_vssmBlocker(ivec4 searchRect, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 178
+#line 189
 float shadowc_vssmVisibility(ivec4 rect, float d){
   shadowc_vssmBegin(rect, d);
-#line 184
+#line 195
   shadowc_qtWalk(3);
-#line 191
+#line 202
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -421,20 +427,20 @@ float shadowc_vssmVisibility(ivec4 rect, float d){
 float shadowc_vssm(ShadowcReceiver r){
   ivec4 searchRect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchRect, r . d);
-#line 211
+#line 222
   float zAvg = shadowc_rectMoments(searchRect, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 219
+#line 230
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 228
+#line 239
   return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
 }
 #line 45 "lookup/shadowc_lookup.glsl"
