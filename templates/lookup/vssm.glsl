@@ -126,7 +126,7 @@ void shadowc_uniformWalk(int den) {
 // Next (Fig. 5) of a node of the full quadtree in pre-order, computed from the node itself, so
 // the walk reads no table: climb while the node is its parent's last child (Z order (0,0) (1,0)
 // (0,1) (1,1), as quadtree_tables.cpp builds them), then step to the next sibling; the root's
-// Next is Null (z = 0). It equals the Next table (tests/emit/quadtree_tables_test.cpp walks both).
+// Next is Null (z = 0). tests/emit/quadtree_tables_test.cpp checks it against the Next table.
 // A dynamically indexed const table becomes an if-ladder per read in lavapipe, and the JIT time
 // of that grows much faster than the node count (docs/performance.md, "Pipeline creation").
 ivec3 shadowc_qtNextNode(ivec3 n) {
