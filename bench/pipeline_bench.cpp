@@ -11,11 +11,13 @@
 // Usage: pipeline_bench [limit seconds = 30] [filter-substring] [compile runs = 3]
 #include <fmt/core.h>
 #include <signal.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -105,7 +107,8 @@ void deviceChild(const CompiledPasses& passes, int fd) {
 
 struct DeviceResult {
   bool finished = false;
-  double seconds = 0;  // wall time of the child (context, scene, pipelines, one run)
+  double seconds = 0;     // wall time of the child (context, scene, pipelines, one run)
+  double cpuSeconds = 0;  // its CPU time, all threads (steadier than wall time on a loaded machine)
   std::string lines;
 };
 
@@ -140,6 +143,13 @@ DeviceResult onDevice(const CompiledPasses& passes, int limitSeconds) {
     ::usleep(20000);
   }
   r.seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+  rusage usage{};
+  ::getrusage(RUSAGE_CHILDREN, &usage);
+  const double cpu = double(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+                     1e-6 * double(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  static double cpuBefore = 0;  // RUSAGE_CHILDREN accumulates over every waited-for child
+  r.cpuSeconds = cpu - cpuBefore;
+  cpuBefore = cpu;
   char buf[4096];
   for (ssize_t n; (n = ::read(fds[0], buf, sizeof buf)) > 0;) r.lines.append(buf, static_cast<size_t>(n));
   ::close(fds[0]);
@@ -156,17 +166,21 @@ int main(int argc, char** argv) try {
       "pipeline_bench: driver compile at -O (median of {}), lavapipe pipeline creation and first dispatch per "
       "pass (JIT + one run; 64² screen, 512² map), device limit {} s per filter\n\n",
       n, limit);
-  fmt::print("| filter | driver compile ms | pipeline create ms | first dispatch per pass (ms) | JIT total s |\n");
-  fmt::print("|---|---:|---:|---|---:|\n");
+  fmt::print(
+      "| filter | driver compile ms (CPU ms) | pipeline create ms | first dispatch per pass (ms) | create + first "
+      "dispatches s | device child CPU s |\n");
+  fmt::print("|---|---:|---:|---|---:|---:|\n");
   for (const Source& s : samples(only)) {
-    std::vector<double> times;
+    std::vector<double> times, cpuTimes;
     std::optional<driver::Artifact> artifact;
     for (int i = 0; i < n; ++i) {
       const auto t0 = Clock::now();
+      const std::clock_t c0 = std::clock();
       driver::Result r = driver::compileSource(s.text, s.name + ".shadow");
+      cpuTimes.push_back(1000.0 * double(std::clock() - c0) / CLOCKS_PER_SEC);
       times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
       if (!r.artifact) {
-        fmt::print("| {} | does not compile | | {} | |\n", s.name, r.log.substr(0, r.log.find('\n')));
+        fmt::print("| {} | does not compile | | {} | | |\n", s.name, r.log.substr(0, r.log.find('\n')));
         break;
       }
       artifact = std::move(r.artifact);
@@ -174,7 +188,8 @@ int main(int argc, char** argv) try {
     if (!artifact) continue;
     const DeviceResult d = onDevice(artifact->passes(), limit);
     if (!d.finished) {
-      fmt::print("| {} | {:.0f} | | killed after {:.0f} s (limit) | > {} |\n", s.name, median(times), d.seconds, limit);
+      fmt::print("| {} | {:.0f} ({:.0f}) | | killed after {:.0f} s (limit) | > {} | {:.1f} |\n", s.name, median(times),
+                 median(cpuTimes), d.seconds, limit, d.cpuSeconds);
       continue;
     }
     std::istringstream in(d.lines);
