@@ -13,6 +13,7 @@
 #include "cli/commands.h"
 #include "driver/driver.h"
 #include "emit/depfile.h"
+#include "plan/plan_printer.h"
 
 namespace shadowc::cli {
 namespace {
@@ -22,10 +23,12 @@ struct CompileArgs {
   std::string outputDir;
   std::string emit = "glsl,spirv,manifest";
   bool printSpec = false;
+  bool printPlan = false;
   bool printRecipe = false;
   bool optimize = true;
   bool depsToStdout = false;  // -M
   bool depsFile = false;      // -MD
+  std::string depsTarget;     // -MT: the rule's target instead of the outputs
   bool werror = false;
 };
 
@@ -37,8 +40,13 @@ int error(const std::string& message) {
 
 int run(CompileArgs& a, CLI::App& sub) {
   // CLI11 2.1 has no multi-letter single-dash options: glslc's -O0, -MD and -Werror arrive here.
-  for (const std::string& extra : sub.remaining()) {
-    if (extra == "-O")
+  const std::vector<std::string> extras = sub.remaining();
+  for (size_t i = 0; i < extras.size(); ++i) {
+    const std::string& extra = extras[i];
+    if (extra == "-MT") {  // glslc's -MT TARGET; Ninja wants a depfile naming only declared outputs
+      if (i + 1 == extras.size()) return error("-MT needs a target (shadowc compile FILE -o DIR -MD -MT TARGET)");
+      a.depsTarget = extras[++i];
+    } else if (extra == "-O")
       a.optimize = true;
     else if (extra == "-O0")
       a.optimize = false;
@@ -72,12 +80,13 @@ int run(CompileArgs& a, CLI::App& sub) {
     if (kinds.empty()) return error("--emit: no kind given (expected a subset of glsl,spirv,manifest)");
   }
 
-  // Stop as early as the request allows: --print-spec alone needs the checker, -M the plan.
+  // Stop as early as the request allows: --print-spec alone needs the checker, -M and
+  // --print-plan the plan.
   driver::Options options;
   options.optimize = a.optimize;
   options.warningsAsErrors = a.werror;
   if (a.outputDir.empty())
-    options.stopAfter = driver::Stage::Check;
+    options.stopAfter = a.printPlan ? driver::Stage::Plan : driver::Stage::Check;
   else if (a.depsToStdout)
     options.stopAfter = driver::Stage::Plan;
   const driver::Result r = driver::compileFile(a.input, options);
@@ -90,20 +99,26 @@ int run(CompileArgs& a, CLI::App& sub) {
 
   if (a.printSpec) {
     fmt::print("{}\n", specToJson(spec).dump(2));
-    if (a.outputDir.empty()) return 0;
+    if (a.outputDir.empty() && !a.printPlan) return 0;
   }
-  if (a.outputDir.empty()) return error("no output directory (use -o DIR)");
-  const std::filesystem::path dir(a.outputDir);
   auto didNotCompile = [&] {
     std::fflush(stdout);
     fmt::print(stderr, "shadowc: error: filter '{}' did not compile; nothing was written\n", spec.name);
     return 1;
   };
+  if (a.printPlan) {
+    if (!r.plan) return a.outputDir.empty() ? 1 : didNotCompile();
+    fmt::print("{}", printPassGraph(*r.plan));
+    if (a.outputDir.empty()) return 0;
+  }
+  if (a.outputDir.empty()) return error("no output directory (use -o DIR)");
+  const std::filesystem::path dir(a.outputDir);
   if (!r.plan) return didNotCompile();
 
   std::vector<std::string> outputs;
   for (const auto& f : driver::plannedOutputs(*r.plan, spec))
     if (kinds.count(driver::outputKindOf(f))) outputs.push_back((dir / f).string());
+  if (!a.depsTarget.empty()) outputs = {a.depsTarget};
   if (a.depsToStdout) {  // glslc -M: dependencies only, nothing compiled or written
     fmt::print("{}", makeDependencyRule(outputs, a.input));
     return 0;
@@ -124,6 +139,8 @@ CommandRunner registerCompile(CLI::App& app) {
   sub->add_option("-o,--output", args->outputDir, "output directory (created; files replaced atomically)");
   sub->add_option("--emit", args->emit, "comma-separated subset of glsl,spirv,manifest (default: all)");
   sub->add_flag("--print-spec", args->printSpec, "print the normalized FilterSpec as JSON and stop (unless -o)");
+  sub->add_flag("--print-plan", args->printPlan,
+                "print the pass graph (images, passes, every specialization value) and stop (unless -o)");
   sub->add_flag("--print-recipe", args->printRecipe, "print the -O spirv-opt recipe, one pass per line");
   sub->footer(
       "glslc-style flags:\n"
@@ -131,6 +148,7 @@ CommandRunner registerCompile(CLI::App& app) {
       "  -O0         no spirv-opt (glslang output, validated)\n"
       "  -M          print make dependencies of the outputs to stdout; compile nothing\n"
       "  -MD         also write DIR/<filter>.d with those dependencies\n"
+      "  -MT TARGET  name TARGET (not the outputs) as the rule's target, with -M or -MD\n"
       "  -Werror     treat warnings (filter description and GLSL) as errors\n"
       "Outputs: DIR/manifest.json, DIR/<pass>.glsl, DIR/<pass>.spv, DIR/<filter>_lookup.glsl (docs/manifest.md).");
   sub->allow_extras();

@@ -11,6 +11,8 @@ PKGS=(
   libembree-dev libtbb-dev libassimp-dev zlib1g-dev              # reference, meshes (assimp links libz.so)
   libgtest-dev libgmock-dev libbenchmark-dev                                # tests and benchmarks
   assimp-testmodels                             # real meshes of the duck/spider/engine scenes (/usr/share/assimp/models)
+  ninja-build                                     # tests/integration drives a consumer with Ninja and make
+  clang-14 libclang-rt-14-dev                     # libFuzzer + ASan/UBSan runtimes (scripts/fuzz.sh)
 )
 missing=()
 for p in "${PKGS[@]}"; do

@@ -32,13 +32,12 @@ LoadResult checkBuiltSpec(const FilterSpec& spec) {
   return checked;
 }
 
-// Plan, then emit and run the backend: the one place the planner's output meets the emitter.
-// (The emitter still plans internally; it takes `plan` once it renders the PassGraph.)
-FilterEmitResult emitStage(const FilterSpec& spec, const PassGraph& /*plan*/, const Options& options) {
+// Emit and run the backend: the one place the planner's output meets the emitter.
+FilterEmitResult emitStage(const FilterSpec& spec, const PassGraph& plan, const Options& options) {
   EmitOptions eo;
   eo.optimize = options.optimize;
   eo.warningsAsErrors = options.warningsAsErrors;
-  return emitFilter(spec, eo);
+  return emitPassGraph(spec, plan, eo);
 }
 
 // Everything after the front end, shared by the three entry points.

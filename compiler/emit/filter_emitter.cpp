@@ -6,10 +6,10 @@
 #include <stdexcept>
 
 #include "emit/glsl_tidy.h"
-#include "emit/lookup_specialization.h"
 #include "emit/shader_emitter.h"
+#include "emit/specialization_block.h"
 #include "emit/template_includes.h"
-#include "plan/planner.h"
+#include "plan/internal_error.h"
 #include "spec/load_filter.h"
 
 namespace shadowc {
@@ -21,7 +21,7 @@ constexpr const char* kDefaultSignature = "float shadowc_visibility(vec3 worldPo
 
 // The includable lookup: the lookup entry preprocessed with the filter's defines, without
 // #version and #line (an engine #includes it into its own shader after its #version line).
-bool emitLookup(const FilterSpec& spec, const LookupSpecialization& lookup, std::string& text, std::string& log) {
+bool emitLookup(const FilterSpec& spec, const Specialization& lookup, std::string& text, std::string& log) {
   const std::string wrapper = std::string("#version 460\n#extension GL_GOOGLE_include_directive : require\n") +
                               kSpecializeMarker + "\n#include \"" + kLookupEntry + "\"\n";
   std::string preprocessed;
@@ -66,18 +66,12 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
   return bytes;
 }
 
-FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options) {
+FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, const EmitOptions& options) {
   FilterEmitResult result;
-  LookupSpecialization lookup;
-  try {
-    lookup = specializeLookup(spec);
-  } catch (const std::exception& e) {
-    result.log = spec.location.file + ":" + std::to_string(spec.location.line) + ":" +
-                 std::to_string(spec.location.column) + ": error: " + e.what() + "\n";
-    return result;
-  }
-  PassGraph graph = planPasses(spec);
-  Manifest& m = graph.manifest;
+  const PassSource* shade = shadeSource(graph);
+  if (!shade || graph.sources.size() != graph.manifest.passes.size())
+    throw InternalError("the pass graph of '" + spec.name + "' has no shade pass or a source per pass");
+  Manifest m = graph.manifest;
 
   // One shader per distinct output stem (mip1..mipK share "mip", minmax1..K share "minmax").
   std::map<std::string, EmittedShader> shaders;
@@ -86,13 +80,7 @@ FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options) 
     const PassSource& src = graph.sources[i];
     auto it = shaders.find(src.stem);
     if (it == shaders.end()) {
-      LookupSpecialization s;
-      if (src.lookup) {
-        s = lookup;
-      } else {
-        s.defines = src.defines;
-      }
-      EmittedShader sh = emitComputeShader(src.templatePath, s, so);
+      EmittedShader sh = emitComputeShader(src.templatePath, src.values, so);
       result.log += sh.log;
       if (!sh.ok) return result;
       it = shaders.emplace(src.stem, std::move(sh)).first;
@@ -105,7 +93,8 @@ FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options) 
   }
 
   std::string lookupText;
-  if (!emitLookup(spec, lookup, lookupText, result.log)) return result;
+  // The includable lookup is the shade pass's code: the same values, the lookup entry template.
+  if (!emitLookup(spec, shade->values, lookupText, result.log)) return result;
   result.files.push_back({lookupFileName(spec.name), lookupText});
 
   m.compilerVersion = SHADOWC_VERSION;

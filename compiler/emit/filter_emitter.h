@@ -1,7 +1,8 @@
-// The emitter's entry point: FilterSpec -> every output file of `shadowc compile`, in memory.
-// plan (planner.h) -> one shader per distinct pass source (shader_emitter.h) -> the includable
-// lookup file -> manifest.json with the content hash. Writing is separate (output_writer.h),
-// so nothing reaches the disk unless every shader compiled and validated.
+// The emitter's entry point: PassGraph -> every output file of `shadowc compile`, in memory.
+// It only renders what the planner decided: one shader per distinct pass source
+// (shader_emitter.h) -> the includable lookup file (the shade pass's values) -> manifest.json
+// with the content hash. Writing is separate (output_writer.h), so nothing reaches the disk
+// unless every shader compiled and validated.
 #pragma once
 
 #include <string>
@@ -9,6 +10,7 @@
 
 #include "emit/content_hash.h"
 #include "manifest/manifest.h"
+#include "plan/pass_graph.h"
 #include "spec/filter_spec.h"
 
 namespace shadowc {
@@ -25,7 +27,9 @@ struct FilterEmitResult {
   std::vector<EmittedFile> files;  // sorted by name: <stem>.glsl/.spv, <filter>_lookup.glsl, manifest.json
 };
 
-FilterEmitResult emitFilter(const FilterSpec& spec, const EmitOptions& options = {});
+// `graph` is planPasses(spec); compiler/driver/ is the one caller that wires the two. A
+// malformed graph is an InternalError (plan/internal_error.h).
+FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, const EmitOptions& options = {});
 
 // The manifest's file name and the lookup file's name for a filter.
 inline constexpr const char* kManifestFile = "manifest.json";

@@ -3,6 +3,7 @@
 #include <regex>
 
 #include "emit/glsl_tidy.h"
+#include "emit/specialization_block.h"
 #include "emit/template_includes.h"
 
 namespace shadowc {
@@ -21,7 +22,7 @@ std::array<uint32_t, 3> localSizeOf(const std::string& glsl) {
 
 }  // namespace
 
-std::string specializeTemplate(const std::string& templatePath, const LookupSpecialization& specialization,
+std::string specializeTemplate(const std::string& templatePath, const Specialization& specialization,
                                std::string& error) {
   const std::string_view text = templateText(templatePath);
   if (text.empty()) {
@@ -36,7 +37,7 @@ std::string specializeTemplate(const std::string& templatePath, const LookupSpec
   return insertSpecialization(templ, specialization);
 }
 
-EmittedShader emitComputeShader(const std::string& templatePath, const LookupSpecialization& specialization,
+EmittedShader emitComputeShader(const std::string& templatePath, const Specialization& specialization,
                                 const ShaderEmitOptions& options) {
   EmittedShader out;
   const std::string name = "templates/" + templatePath;  // diagnostics point into the template

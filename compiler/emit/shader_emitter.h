@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "backend/spirv_backend.h"
-#include "emit/lookup_specialization.h"
+#include "plan/specialization.h"
 
 namespace shadowc {
 
@@ -27,12 +27,12 @@ struct ShaderEmitOptions {
   bool warningsAsErrors = false;  // a preprocessor/compiler warning fails the shader
 };
 
-EmittedShader emitComputeShader(const std::string& templatePath, const LookupSpecialization& specialization,
+EmittedShader emitComputeShader(const std::string& templatePath, const Specialization& specialization,
                                 const ShaderEmitOptions& options);
 
 // The specialized (not yet preprocessed) text: template with the block at the marker.
-// Fails (empty optional semantics: ok = false in the log) when the template is unknown or has no marker.
-std::string specializeTemplate(const std::string& templatePath, const LookupSpecialization& specialization,
+// Sets `error` (and returns "") when the template is unknown or has no marker.
+std::string specializeTemplate(const std::string& templatePath, const Specialization& specialization,
                                std::string& error);
 
 }  // namespace shadowc

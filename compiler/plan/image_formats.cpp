@@ -47,6 +47,4 @@ ImageFormat satFormat(const FilterSpec& spec) {
   return bySize(c, ImageFormat::R32F, ImageFormat::RG32F, ImageFormat::RGBA32F);
 }
 
-const char* glslQualifier(ImageFormat f) { return toString(f); }  // manifest names are the GLSL names
-
 }  // namespace shadowc

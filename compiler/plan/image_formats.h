@@ -1,4 +1,5 @@
-// The one place that maps storage choices to image formats and GLSL format qualifiers.
+// The one place that maps storage choices to image formats (the emitter renders a format as
+// its GLSL layout qualifier: emit/glsl_literal.h).
 #pragma once
 
 #include "manifest/manifest.h"
@@ -16,8 +17,5 @@ ImageFormat momentsFormat(const FilterSpec& spec);
 
 // `sat` format: int32 -> r/rg/rgba32ui, fp32 kinds -> r/rg/rgba32f.
 ImageFormat satFormat(const FilterSpec& spec);
-
-// The GLSL layout qualifier of a format ("rg32f", "rgba16", "rg32ui").
-const char* glslQualifier(ImageFormat f);
 
 }  // namespace shadowc

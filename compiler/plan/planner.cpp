@@ -4,9 +4,9 @@
 #include <cmath>
 #include <string>
 
-#include "emit/template_codes.h"
-#include "plan/glsl_literal.h"
 #include "plan/image_formats.h"
+#include "plan/shade_plan.h"
+#include "plan/template_codes.h"
 
 namespace shadowc {
 namespace {
@@ -14,7 +14,13 @@ namespace {
 constexpr SizeRule kMap{SizeDomain::Map, 0};
 constexpr SizeRule kScreen{SizeDomain::Screen, 0};
 
-using Defines = std::vector<std::pair<std::string, std::string>>;
+// The prefilter passes compute in fp32: their reals are stored as the fp32 value the pass folds in.
+Real fp32(double v) { return Real{static_cast<double>(static_cast<float>(v))}; }
+RealList fp32(const std::vector<double>& values) {
+  RealList out;
+  for (double v : values) out.values.push_back(fp32(v).value);
+  return out;
+}
 
 class Planner {
  public:
@@ -49,12 +55,14 @@ class Planner {
     return graph_.manifest.passes.back();
   }
 
-  Defines momentsDefines() const {
-    return {{"SHADOWC_WARP", std::to_string(warpDefineValue(spec_.moments.warp))},
-            {"SHADOWC_EXP_POSITIVE", glslFloat(spec_.moments.positiveExponent)},
-            {"SHADOWC_EXP_NEGATIVE", glslFloat(spec_.moments.negativeExponent)},
-            {"SHADOWC_LAYERS", std::to_string(spec_.moments.layers)},
-            {"SHADOWC_MOMENTS_FORMAT", glslQualifier(momentsFormat(spec_))}};
+  Specialization momentsValues() const {
+    Specialization v;
+    v.add("SHADOWC_WARP", warpCode(spec_.moments.warp));
+    v.add("SHADOWC_EXP_POSITIVE", fp32(spec_.moments.positiveExponent));
+    v.add("SHADOWC_EXP_NEGATIVE", fp32(spec_.moments.negativeExponent));
+    v.add("SHADOWC_LAYERS", static_cast<long long>(spec_.moments.layers));
+    v.add("SHADOWC_MOMENTS_FORMAT", momentsFormat(spec_));
+    return v;
   }
 
   void planMoments() {
@@ -66,12 +74,12 @@ class Planner {
     if (lloyd) planLloyd(layers);
 
     // moments: depth -> warped (per-layer remapped) moments.
-    Defines d = momentsDefines();
-    d.emplace_back("SHADOWC_SPLITS", glslFloatArray(spec_.moments.splits));
-    d.emplace_back("SHADOWC_OVERLAP", glslFloat(spec_.moments.overlap));
-    d.emplace_back("SHADOWC_SPLITS_FROM_IMAGE", lloyd ? "1" : "0");
+    Specialization d = momentsValues();
+    d.add("SHADOWC_SPLITS", fp32(spec_.moments.splits));  // layers+1 after normalization
+    d.add("SHADOWC_OVERLAP", fp32(spec_.moments.overlap));
+    d.add("SHADOWC_SPLITS_FROM_IMAGE", lloyd);
     Pass& m = addPass("moments", "moments", {8, 8, 1}, {kMap, DispatchMode::Texels},
-                      {"passes/moments.comp", "moments", std::move(d), false});
+                      {"passes/moments.comp", "moments", std::move(d)});
     m.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "moments", Access::StorageWrite, 0}};
     if (lloyd) m.bindings.push_back({2, "splits", Access::Sampled, -1});
 
@@ -79,13 +87,13 @@ class Planner {
       addImage({"moments_tmp", momentsFormat(spec_), kMap, 1, layers, ImageRole::Internal, false});
       const int r = spec_.prefilter.blurRadius;
       for (int axis = 0; axis < 2; ++axis) {
-        Defines b = momentsDefines();
-        b.emplace_back("SHADOWC_BLUR_AXIS", std::to_string(axis));
-        b.emplace_back("SHADOWC_BLUR_RADIUS", std::to_string(r));
-        b.emplace_back("SHADOWC_BLUR_WEIGHTS", glslFloatArray(blurWeights(spec_.prefilter.blur, r)));
+        Specialization b = momentsValues();
+        b.add("SHADOWC_BLUR_AXIS", static_cast<long long>(axis));
+        b.add("SHADOWC_BLUR_RADIUS", static_cast<long long>(r));
+        b.add("SHADOWC_BLUR_WEIGHTS", fp32(blurWeights(spec_.prefilter.blur, r)));
         const std::string name = axis == 0 ? "blur_h" : "blur_v";
-        Pass& p = addPass(name, "blur", {8, 8, 1}, {kMap, DispatchMode::Texels},
-                          {"passes/blur.comp", name, std::move(b), false});
+        Pass& p =
+            addPass(name, "blur", {8, 8, 1}, {kMap, DispatchMode::Texels}, {"passes/blur.comp", name, std::move(b)});
         const char* from = axis == 0 ? "moments" : "moments_tmp";
         const char* to = axis == 0 ? "moments_tmp" : "moments";
         p.bindings = {{0, from, Access::StorageRead, 0}, {1, to, Access::StorageWrite, 0}};
@@ -94,7 +102,7 @@ class Planner {
 
     for (int k = 1; k < levels; ++k) {
       Pass& p = addPass("mip" + std::to_string(k), "mip", {8, 8, 1}, {{SizeDomain::Map, k}, DispatchMode::Texels},
-                        {"passes/mip.comp", "mip", momentsDefines(), false});
+                        {"passes/mip.comp", "mip", momentsValues()});
       p.bindings = {{0, "moments", Access::StorageRead, k - 1}, {1, "moments", Access::StorageWrite, k}};
     }
 
@@ -105,47 +113,57 @@ class Planner {
   // the splits. One workgroup: dispatch extent 1x1 (shift 16) with local size 256.
   // `splits` must be layers+1 texels wide; sizes are relative to the map, so the shift keeps
   // it wide enough for every map of at least 64 texels (the pyramid's minimum as well).
+  Specialization lloydValues(int layers) const {
+    Specialization v;
+    v.add("SHADOWC_LAYERS", static_cast<long long>(layers));
+    v.add("SHADOWC_LLOYD_ITERATIONS", static_cast<long long>(std::max(1, spec_.moments.lloydIterations)));
+    return v;
+  }
+
   void planLloyd(int layers) {
     int shift = 6;
     while (shift > 0 && (64 >> shift) < layers + 1) --shift;
     addImage({"splits", ImageFormat::R32F, {SizeDomain::Map, shift}, 1, 1, ImageRole::Internal, false});
     Pass& p = addPass("lloyd", "lloyd", {256, 1, 1}, {{SizeDomain::Map, 16}, DispatchMode::Texels},
-                      {"passes/lloyd.comp",
-                       "lloyd",
-                       {{"SHADOWC_LAYERS", std::to_string(layers)},
-                        {"SHADOWC_LLOYD_ITERATIONS", std::to_string(std::max(1, spec_.moments.lloydIterations))}},
-                       false});
+                      {"passes/lloyd.comp", "lloyd", lloydValues(layers)});
     p.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "splits", Access::StorageWrite, 0}};
   }
 
   void planSat(int layers) {
     addImage({"sat", satFormat(spec_), kMap, 1, layers, ImageRole::Internal, false});
-    Defines d = momentsDefines();
-    d.emplace_back("SHADOWC_SAT_KIND", std::to_string(satKindDefineValue(spec_.storage.sat)));
-    d.emplace_back("SHADOWC_SAT_FORMAT", glslQualifier(satFormat(spec_)));
-    Pass& rows = addPass("sat_rows", "sat", {64, 1, 1}, {kMap, DispatchMode::Rows},
-                         {"passes/sat_rows.comp", "sat_rows", d, false});
+    Specialization d = momentsValues();
+    d.add("SHADOWC_SAT_KIND", satKindCode(spec_.storage.sat));
+    d.add("SHADOWC_SAT_FORMAT", satFormat(spec_));
+    Pass& rows =
+        addPass("sat_rows", "sat", {64, 1, 1}, {kMap, DispatchMode::Rows}, {"passes/sat_rows.comp", "sat_rows", d});
     rows.bindings = {{0, "moments", Access::StorageRead, 0}, {1, "sat", Access::StorageWrite, 0}};
     Pass& cols = addPass("sat_columns", "sat", {64, 1, 1}, {kMap, DispatchMode::Columns},
-                         {"passes/sat_columns.comp", "sat_columns", d, false});
+                         {"passes/sat_columns.comp", "sat_columns", d});
     cols.bindings = {{0, "sat", Access::StorageReadWrite, 0}};
+  }
+
+  static Specialization minmaxValues(bool level0) {
+    Specialization v;
+    v.add("SHADOWC_MINMAX_LEVEL0", level0);
+    return v;
   }
 
   void planMinMax() {
     const int levels = pyramidLevels(spec_);
     addImage({"minmax", ImageFormat::RG32F, kMap, levels, 1, ImageRole::Internal, false});
     Pass& p0 = addPass("minmax0", "minmax", {8, 8, 1}, {kMap, DispatchMode::Texels},
-                       {"passes/minmax.comp", "minmax0", {{"SHADOWC_MINMAX_LEVEL0", "1"}}, false});
+                       {"passes/minmax.comp", "minmax0", minmaxValues(true)});
     p0.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "minmax", Access::StorageWrite, 0}};
     for (int k = 1; k < levels; ++k) {
       Pass& p = addPass("minmax" + std::to_string(k), "minmax", {8, 8, 1}, {{SizeDomain::Map, k}, DispatchMode::Texels},
-                        {"passes/minmax.comp", "minmax", {{"SHADOWC_MINMAX_LEVEL0", "0"}}, false});
+                        {"passes/minmax.comp", "minmax", minmaxValues(false)});
       p.bindings = {{0, "minmax", Access::StorageRead, k - 1}, {1, "minmax", Access::StorageWrite, k}};
     }
   }
 
   void planShade() {
-    Pass& s = addPass("shade", "shade", {8, 8, 1}, {kScreen, DispatchMode::Texels}, {"shade.comp", "shade", {}, true});
+    Pass& s = addPass("shade", "shade", {8, 8, 1}, {kScreen, DispatchMode::Texels},
+                      {"shade.comp", "shade", planShadeSpecialization(spec_)});
     s.bindings = {{0, "frame", Access::Uniform, -1},
                   {1, "gbuffer_position", Access::StorageRead, -1},
                   {2, "gbuffer_normal", Access::StorageRead, -1},

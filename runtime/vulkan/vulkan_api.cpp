@@ -27,6 +27,13 @@ void loadVulkanLoader() {
                 "(scripts/install-deps.sh)";
       return;
     }
+#if defined(__SANITIZE_ADDRESS__)
+    // Sanitizer builds only (scripts/sanitize.sh): keep lavapipe and the validation layer mapped
+    // after the loader unloads them, so LeakSanitizer names their allocations for
+    // tests/sanitizers/lsan.supp instead of printing "<unknown module>".
+    for (const char* so : {"libvulkan_lvp.so", "libVkLayer_khronos_validation.so"})
+      dlopen(so, RTLD_NOW | RTLD_NODELETE);
+#endif
     vkGetInstanceProcAddr = reinterpret_cast<PFN_vkGetInstanceProcAddr>(dlsym(lib, "vkGetInstanceProcAddr"));
     if (!vkGetInstanceProcAddr) {
       failure = "the Vulkan loader has no vkGetInstanceProcAddr";
@@ -40,8 +47,8 @@ void loadVulkanLoader() {
       return;
     }
     std::string missing;
-#define SHADOWC_VK_LOAD(name)                                  \
-  name = reinterpret_cast<PFN_##name>(dlsym(lib, #name));      \
+#define SHADOWC_VK_LOAD(name)                             \
+  name = reinterpret_cast<PFN_##name>(dlsym(lib, #name)); \
   if (!name) missing += std::string(missing.empty() ? "" : ", ") + #name;
     SHADOWC_VK_INSTANCE_FUNCTIONS(SHADOWC_VK_LOAD)
     SHADOWC_VK_DEVICE_FUNCTIONS(SHADOWC_VK_LOAD)

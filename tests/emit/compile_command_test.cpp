@@ -34,6 +34,23 @@ TEST(CompileCommand, WritesTheOutputsAndAMakeDepfile) {
   EXPECT_NE(dep.find(": " + kSample), std::string::npos) << dep;
 }
 
+TEST(CompileCommand, DashMTNamesOnlyTheGivenTarget) {
+  const auto dir = test::freshTempDir("cli-MT");
+  const auto target = (dir / "o" / "vssm_adaptive.d").string();
+  const CliRun r = shadowc("compile " + kSample + " -o " + (dir / "o").string() + " -MD -MT " + target, dir / "err");
+  ASSERT_EQ(r.code, 0) << test::readFile(dir / "err");
+  EXPECT_EQ(test::readFile(dir / "o" / "vssm_adaptive.d"), target + ": " + kSample + "\n");
+  EXPECT_TRUE(std::filesystem::exists(dir / "o" / "shade.spv")) << "-MT changes the rule, not the outputs";
+}
+
+TEST(CompileCommand, DashMTWithoutATargetIsAnError) {
+  const auto dir = test::freshTempDir("cli-MT-missing");
+  const CliRun r = shadowc("compile " + kSample + " -o " + (dir / "o").string() + " -MD -MT", dir / "err");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(test::readFile(dir / "err").find("-MT needs a target"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "o"));
+}
+
 TEST(CompileCommand, DashMPrintsDependenciesAndWritesNothing) {
   const auto dir = test::freshTempDir("cli-M");
   const CliRun r = shadowc("compile " + kSample + " -o " + (dir / "o").string() + " -M --emit spirv", dir / "err");

@@ -13,7 +13,8 @@
 
 #include "backend/spirv_backend.h"
 #include "embed/embedded_file.h"
-#include "emit/lookup_specialization.h"
+#include "emit/specialization_block.h"
+#include "plan/shade_plan.h"
 #include "spec/filter_spec.h"
 
 namespace shadowc {
@@ -173,10 +174,10 @@ std::optional<std::string> resolveTemplate(const std::string& name) {
   return std::string(text);
 }
 
-std::string shadeSource(const FilterSpec& spec) {
+std::string shadeText(const FilterSpec& spec) {
   std::string_view shade = templates::find("shade.comp");
   EXPECT_FALSE(shade.empty());
-  return insertSpecialization(std::string(shade), specializeLookup(spec));
+  return insertSpecialization(std::string(shade), planShadeSpecialization(spec));
 }
 
 std::string lower(std::string s) {
@@ -186,7 +187,7 @@ std::string lower(std::string s) {
 
 std::string preprocessed(const Variant& v) {
   std::string out;
-  SpirvResult r = preprocessGlsl(shadeSource(v.spec), ShaderStage::Compute, v.name + ".comp", resolveTemplate, out);
+  SpirvResult r = preprocessGlsl(shadeText(v.spec), ShaderStage::Compute, v.name + ".comp", resolveTemplate, out);
   EXPECT_TRUE(r.ok) << v.name << ":\n" << r.log;
   // Debug aid: SHADOWC_LOOKUP_DUMP=<dir> writes every preprocessed variant there.
   if (const char* dir = std::getenv("SHADOWC_LOOKUP_DUMP"))
@@ -205,7 +206,7 @@ class LookupCompile : public ::testing::TestWithParam<Variant> {};
 
 TEST_P(LookupCompile, SpecializesPreprocessesAndCompilesToValidSpirv) {
   const Variant& v = GetParam();
-  ASSERT_EQ(shadeSource(v.spec).find(kSpecializeMarker), std::string::npos) << "marker not replaced";
+  ASSERT_EQ(shadeText(v.spec).find(kSpecializeMarker), std::string::npos) << "marker not replaced";
   // Compile the preprocessed text (what the emitter ships; the same tokens as the source).
   const std::string pre = preprocessed(v);
   SpirvResult r = compileGlsl(pre, ShaderStage::Compute, v.name + ".comp", resolveTemplate, BackendOptions{});
@@ -279,19 +280,19 @@ TEST(LookupCompileChecks, FoldedLightWidthReplacesTheFrameValue) {
 
 TEST(LookupCompileChecks, SpecializationIsDeterministicAndKeepsLineNumbers) {
   const FilterSpec s = find("vssm_paper_example").spec;
-  EXPECT_EQ(shadeSource(s), shadeSource(s));
-  const std::string src = shadeSource(s);
+  EXPECT_EQ(shadeText(s), shadeText(s));
+  const std::string src = shadeText(s);
   EXPECT_NE(src.find("#line 4\n"), std::string::npos);  // marker is line 3 of shade.comp
 }
 
 TEST(LookupCompileChecks, ImpossibleCombinationsAreRejected) {
   FilterSpec s = vssmSpec();
   s.moments.warp = Warp::Evsm4;
-  EXPECT_THROW(specializeLookup(s), std::invalid_argument);
+  EXPECT_THROW(planShadeSpecialization(s), std::invalid_argument);
   FilterSpec p = momentsSpec();
   p.moments.warp = Warp::PowerCdf;
   p.storage.sat = SatKind::Int32;
-  EXPECT_THROW(specializeLookup(p), std::invalid_argument);
+  EXPECT_THROW(planShadeSpecialization(p), std::invalid_argument);
 }
 
 }  // namespace

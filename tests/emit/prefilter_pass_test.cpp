@@ -27,17 +27,13 @@ std::vector<FilterSpec> variants() {
   for (SatKind k : {SatKind::Fp32Centered, SatKind::Fp32Naive}) {
     FilterSpec s = test::vssmInt32Spec();
     s.storage.sat = k;
-    s.moments.layers = 2;
+    s.moments.layers = 2;                // layered SAT: a filtered-moments lookup (VSSM needs one layer)
     s.moments.splits = {0.0, 0.5, 1.0};  // uniform, as normalization writes it
+    s.blocker.kind = BlockerKind::None;
+    s.kernel.subdivision = Subdivision::None;
     v.push_back(s);
   }
   return v;
-}
-
-LookupSpecialization asSpecialization(const PassSource& s) {
-  LookupSpecialization l;
-  l.defines = s.defines;
-  return l;
 }
 
 TEST(PrefilterPasses, EveryPassOfEveryVariantCompilesAndValidatesAtBothLevels) {
@@ -46,9 +42,9 @@ TEST(PrefilterPasses, EveryPassOfEveryVariantCompilesAndValidatesAtBothLevels) {
     const PassGraph g = planPasses(spec);
     std::set<std::string> seen;
     for (const PassSource& src : g.sources) {
-      if (src.lookup || !seen.insert(src.stem).second) continue;
+      if (src.templatePath == "shade.comp" || !seen.insert(src.stem).second) continue;
       for (bool optimize : {true, false}) {
-        const EmittedShader sh = emitComputeShader(src.templatePath, asSpecialization(src), {optimize, true});
+        const EmittedShader sh = emitComputeShader(src.templatePath, src.values, {optimize, true});
         ASSERT_TRUE(sh.ok) << spec.name << " " << src.stem << (optimize ? " -O" : " -O0") << "\n" << sh.log;
         EXPECT_EQ(validateSpirv(sh.spirv), "") << src.stem;
         EXPECT_EQ(sh.glsl.find("@shadowc:specialize"), std::string::npos);  // marker replaced
@@ -64,7 +60,7 @@ TEST(PrefilterPasses, LocalSizeIsReadBackFromTheEmittedShader) {
   const PassGraph g = planPasses(test::vssmInt32Spec());
   for (const PassSource& src : g.sources) {
     if (src.stem != "sat_rows" && src.stem != "moments") continue;
-    const EmittedShader sh = emitComputeShader(src.templatePath, asSpecialization(src), {});
+    const EmittedShader sh = emitComputeShader(src.templatePath, src.values, {});
     ASSERT_TRUE(sh.ok) << sh.log;
     const std::array<uint32_t, 3> expected =
         src.stem == "sat_rows" ? std::array<uint32_t, 3>{64, 1, 1} : std::array<uint32_t, 3>{8, 8, 1};
@@ -76,13 +72,13 @@ TEST(PrefilterPasses, UnusedWarpsAndSatKindsAreAbsentFromTheEmittedGlsl) {
   const PassGraph g = planPasses(test::vssmInt32Spec());
   for (const PassSource& src : g.sources) {
     if (src.stem == "moments") {
-      const EmittedShader sh = emitComputeShader(src.templatePath, asSpecialization(src), {});
+      const EmittedShader sh = emitComputeShader(src.templatePath, src.values, {});
       ASSERT_TRUE(sh.ok) << sh.log;
       EXPECT_EQ(sh.glsl.find("exp("), std::string::npos) << "linear warp must not carry the EVSM code";
       EXPECT_EQ(sh.glsl.find("splitsImage"), std::string::npos);
     }
     if (src.stem == "sat_rows") {
-      const EmittedShader sh = emitComputeShader(src.templatePath, asSpecialization(src), {});
+      const EmittedShader sh = emitComputeShader(src.templatePath, src.values, {});
       ASSERT_TRUE(sh.ok) << sh.log;
       EXPECT_NE(sh.glsl.find("uimage2DArray"), std::string::npos);
       EXPECT_NE(sh.glsl.find("65536.0"), std::string::npos) << "16.16 fixed point encode";
@@ -94,8 +90,9 @@ TEST(PrefilterPasses, UnusedWarpsAndSatKindsAreAbsentFromTheEmittedGlsl) {
 // The sibling: a broken specialization fails, and the message points into the template at the
 // line that uses the constant (the #line after the specialization block keeps numbers right).
 TEST(PrefilterPasses, ErrorsPointIntoTheTemplateLine) {
-  LookupSpecialization l;
-  l.defines = {{"SHADOWC_BLUR_RADIUS", "2"}, {"SHADOWC_BLUR_WEIGHTS", "float[](1.0)"}};  // 1 weight, 3 needed
+  Specialization l;
+  l.add("SHADOWC_BLUR_RADIUS", 2LL);
+  l.add("SHADOWC_BLUR_WEIGHTS", RealList{{1.0}});  // 1 weight, 3 needed
   const EmittedShader sh = emitComputeShader("passes/blur.comp", l, {});
   ASSERT_FALSE(sh.ok);
   const std::string text(templateText("passes/blur.comp"));

@@ -2,7 +2,7 @@
 // nodes a recursive quadtree traversal visits, in the same order, for every pattern of
 // descend/accept decisions. The reference identifies nodes by (level, ix, iy), never by table
 // index, so a wrong numbering cannot hide. The unrolled GLSL is checked by interpreting it.
-#include "emit/quadtree_tables.h"
+#include "plan/quadtree_tables.h"
 
 #include <gtest/gtest.h>
 
@@ -13,6 +13,8 @@
 #include <string>
 #include <tuple>
 #include <vector>
+
+#include "emit/quadtree_glsl.h"
 
 namespace shadowc {
 namespace {

@@ -75,7 +75,9 @@ TEST(Planner, FpSatKindsUseFloatFormats) {
   FilterSpec spec = test::vssmInt32Spec();
   spec.storage.sat = SatKind::Fp32Centered;
   EXPECT_EQ(image(planPasses(spec), "sat")->format, ImageFormat::RG32F);
-  spec.moments.warp = Warp::Evsm4;
+  spec.moments.warp = Warp::Evsm4;  // an EVSM4 SAT: a filtered-moments lookup (VSSM needs linear)
+  spec.blocker.kind = BlockerKind::None;
+  spec.kernel.subdivision = Subdivision::None;
   EXPECT_EQ(image(planPasses(spec), "sat")->format, ImageFormat::RGBA32F);
 }
 
@@ -86,16 +88,20 @@ TEST(Planner, LayeredMomentsHaveOneArrayLayerPerLayerAndFoldedSplits) {
   EXPECT_EQ(m->layers, 3);
   EXPECT_EQ(m->format, ImageFormat::RGBA16F);  // evsm4 x fp16
   EXPECT_TRUE(m->linearFilter);
-  const auto& defs = g.sources.at(0).defines;
-  auto def = [&](const std::string& n) {
-    for (const auto& [k, v] : defs)
-      if (k == n) return v;
-    return std::string("<missing>");
+  const auto& values = g.sources.at(0).values.constants;
+  auto value = [&](const std::string& n) -> SpecValue {
+    for (const Constant& c : values)
+      if (c.name == n) return c.value;
+    return SpecValue{-1LL};  // missing
   };
-  EXPECT_EQ(def("SHADOWC_LAYERS"), "3");
-  EXPECT_EQ(def("SHADOWC_SPLITS"), "float[](0.0, 0.25, 0.600000024, 1.0)");
-  EXPECT_EQ(def("SHADOWC_WARP"), "3");
-  EXPECT_EQ(def("SHADOWC_MOMENTS_FORMAT"), "rgba16f");
+  EXPECT_EQ(value("SHADOWC_LAYERS"), SpecValue{3LL});
+  // The pass folds the fp32 values in: 0.6 is stored as float(0.6).
+  const RealList splits{{0.0, 0.25, static_cast<double>(0.6f), 1.0}};
+  EXPECT_EQ(value("SHADOWC_SPLITS"), SpecValue{splits});
+  EXPECT_EQ(value("SHADOWC_WARP"), SpecValue{warpCode(Warp::Evsm4)});
+  const EnumCode evsm4{"SHADOWC_WARP_EVSM4", 3};
+  EXPECT_EQ(value("SHADOWC_WARP"), SpecValue{evsm4});
+  EXPECT_EQ(value("SHADOWC_MOMENTS_FORMAT"), SpecValue{ImageFormat::RGBA16F});
 }
 
 TEST(Planner, BlurAndMipsPlanSeparablePassesAndOnePassPerLevel) {

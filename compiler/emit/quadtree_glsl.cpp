@@ -1,0 +1,62 @@
+// GLSL rendering of the quadtree tables and the unrolled traversal; see quadtree_glsl.h.
+#include "emit/quadtree_glsl.h"
+
+#include <fmt/format.h>
+
+#include <stdexcept>
+
+namespace shadowc {
+
+std::string emitQuadtreeTablesGlsl(const QuadtreeTables& tables, std::string_view prefix) {
+  const size_t n = tables.nodes.size();
+  std::string nodes, child, next;
+  for (size_t i = 0; i < n; ++i) {
+    const QuadtreeNode& q = tables.nodes[i];
+    const char* sep = i + 1 < n ? ", " : "";
+    nodes += fmt::format("ivec3({}, {}, {}){}", q.ix, q.iy, 1 << q.level, sep);
+    child += fmt::format("{}{}", q.child, sep);
+    next += fmt::format("{}{}", q.next, sep);
+  }
+  std::string out;
+  out += fmt::format(
+      "// Quadtree of height {} in pre-order (vssm-yang2010 Algorithm 2, Fig. 5): node = (ix, iy, 2^level)\n",
+      tables.height);
+  out += fmt::format("const ivec3 {}Node[{}] = ivec3[]({});\n", prefix, n, nodes);
+  out += fmt::format("const int {}Child[{}] = int[]({});\n", prefix, n, child);
+  out += fmt::format("const int {}Next[{}] = int[]({});\n", prefix, n, next);
+  return out;
+}
+
+namespace {
+
+void emitUnrolledNode(std::string& out, int height, int level, int ix, int iy, int indent, std::string_view visitFn,
+                      std::string_view leafFn) {
+  const std::string pad(static_cast<size_t>(indent), ' ');
+  const std::string node = fmt::format("ivec3({}, {}, {})", ix, iy, 1 << level);
+  if (level == height) {
+    out += fmt::format("{}{}({});\n", pad, leafFn, node);
+    return;
+  }
+  out += fmt::format("{}if ({}({})) {{\n", pad, visitFn, node);
+  for (int c = 0; c < 4; ++c)
+    emitUnrolledNode(out, height, level + 1, 2 * ix + (c & 1), 2 * iy + (c >> 1), indent + 2, visitFn, leafFn);
+  out += fmt::format("{}}}\n", pad);
+}
+
+}  // namespace
+
+std::string emitUnrolledQuadtreeGlsl(int height, std::string_view functionName, std::string_view visitFn,
+                                     std::string_view leafFn) {
+  if (height < 0 || height > 6) throw std::invalid_argument(fmt::format("quadtree height {} not in [0, 6]", height));
+  std::string out;
+  out += fmt::format("// Algorithm 2 (vssm-yang2010) unrolled for height {}: pre-order, children skipped when the\n",
+                     height);
+  out += "// parent is accepted (fully lit or normal sub-kernel); no loop, no table.\n";
+  out += fmt::format("bool {}(ivec3 node);\nvoid {}(ivec3 node);\n", visitFn, leafFn);
+  out += fmt::format("void {}() {{\n", functionName);
+  emitUnrolledNode(out, height, 0, 0, 0, 2, visitFn, leafFn);
+  out += "}\n";
+  return out;
+}
+
+}  // namespace shadowc

@@ -1,0 +1,166 @@
+// The shade pass's typed values (see shade_plan.h). Values mirror templates/lookup/defaults.glsl.
+#include "plan/shade_plan.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <stdexcept>
+
+#include "plan/planner.h"
+#include "plan/poisson_disk.h"
+#include "plan/quadtree_tables.h"
+#include "plan/template_codes.h"
+
+namespace shadowc {
+namespace {
+
+PointTable poissonTable(std::string name, int count, uint64_t seed) {
+  return {std::move(name),
+          fmt::format("{} Poisson-disk taps in the unit disk (best candidate, seed {}; pcss-blog.txt)", count, seed),
+          poissonDisk(count, seed)};
+}
+
+void check(bool ok, const std::string& message) {
+  if (!ok) throw std::invalid_argument("lookup specialization: " + message);
+}
+
+}  // namespace
+
+Specialization planShadeSpecialization(const FilterSpec& s) {
+  Specialization out;
+  auto defInt = [&](const char* name, long long v) { out.add(name, v); };
+  auto defBool = [&](const char* name, bool v) { out.add(name, v); };
+  auto defReal = [&](const char* name, double v) { out.add(name, Real{v}); };
+  auto defCode = [&](const char* name, EnumCode c) { out.add(name, c); };
+
+  const EnumCode tech = techniqueCode(s);
+  const bool moments = s.representation == Representation::Moments;
+  const bool vssm = tech.code == kTechniqueVssm;
+  const int layers = moments ? s.moments.layers : 1;
+
+  check(layers >= 1, "layers must be >= 1");
+  check(!vssm || s.moments.warp == Warp::Linear, "the VSSM blocker estimate (eq. 4) needs the linear warp");
+  check(moments || s.blocker.kind != BlockerKind::Moments,
+        "the moments blocker estimate needs a moments representation");
+  check(!vssm || layers == 1, "the VSSM path works on a single (unlayered) moments map");
+  check(!(moments && s.moments.warp == Warp::PowerCdf && s.storage.sat != SatKind::None),
+        "power_cdf stores min/max, which a summed-area table cannot sum");
+
+  // ---- technique and resources -----------------------------------------------------------
+  defCode("SHADOWC_TECHNIQUE", tech);
+  defBool("SHADOWC_HAS_MOMENTS", moments);
+  defBool("SHADOWC_HAS_SAT", moments && s.storage.sat != SatKind::None);
+  defBool("SHADOWC_HAS_MINMAX", s.earlyOutMinMax);
+  const bool splitsTexture = moments && layers > 1 && s.moments.split == SplitPlacement::Lloyd;
+  defBool("SHADOWC_HAS_SPLITS_TEXTURE", splitsTexture);
+
+  // ---- light ------------------------------------------------------------------------------
+  if (!s.light.sizeFromScene) defReal("SHADOWC_LIGHT_WIDTH", s.light.shape == LightShape::Point ? 0.0 : s.light.size);
+
+  // ---- bias (pcss-blog.txt slope-scaled form) ---------------------------------------------
+  defCode("SHADOWC_BIAS_KIND", biasKindCode(s.bias.kind));
+  defReal("SHADOWC_BIAS_CONSTANT", s.bias.constant);
+  defReal("SHADOWC_BIAS_SLOPE", s.bias.slope);
+  defReal("SHADOWC_NORMAL_OFFSET", s.bias.normalOffset);
+
+  // ---- kernel -----------------------------------------------------------------------------
+  defBool("SHADOWC_KERNEL_PENUMBRA", s.kernel.size == KernelSize::Penumbra);
+  defReal("SHADOWC_KERNEL_FIXED_TEXELS", std::max(1, s.kernel.fixedTexels));
+  // An int32 SAT box sum must fit in 32 bits: 255^2 texels * 65536 < 2^32 (sat.glsl, FACTS.md).
+  const bool int32Sat = moments && s.storage.sat == SatKind::Int32;
+  defReal("SHADOWC_KERNEL_MAX_TEXELS", std::clamp(s.kernel.maxTexels, 1.0, int32Sat ? 255.0 : 1e6));
+  defCode("SHADOWC_KERNEL_SUBDIVISION", subdivisionCode(s.kernel.subdivision));
+  defInt("SHADOWC_KERNEL_N", std::max(1, s.kernel.uniformN));
+  defInt("SHADOWC_KERNEL_HEIGHT", s.kernel.quadtreeHeight);
+  defBool("SHADOWC_QUADTREE_UNROLLED", s.kernel.traversal == QuadtreeTraversal::Unrolled);
+  defReal("SHADOWC_LIT_THRESHOLD", s.kernel.litThreshold);
+
+  // ---- PCF sampling (depth representation, fallback and contact paths) --------------------
+  defCode("SHADOWC_PCF_PATTERN", pcfPatternCode(s.sampling.pattern));
+  defInt("SHADOWC_PCF_N", std::max(1, s.sampling.gridN));
+  defInt("SHADOWC_PCF_TAPS", std::max(1, s.sampling.taps));
+  defBool("SHADOWC_ROTATION_STABLE", s.sampling.rotation == Rotation::Stable);
+
+  // ---- blocker ----------------------------------------------------------------------------
+  defCode("SHADOWC_BLOCKER_KIND", blockerKindCode(s.blocker.kind));
+  defInt("SHADOWC_BLOCKER_TAPS", std::max(1, s.blocker.taps));
+  defCode("SHADOWC_BLOCKER_PATTERN", samplePatternCode(s.blocker.pattern));
+  defInt("SHADOWC_BLOCKER_GRID_N", std::max(1, static_cast<int>(std::lround(std::sqrt(std::max(1, s.blocker.taps))))));
+  defCode("SHADOWC_BLOCKER_SUBDIVISION", subdivisionCode(s.blocker.subdivision));
+  defInt("SHADOWC_BLOCKER_M", std::max(1, s.blocker.uniformM));
+  defInt("SHADOWC_BLOCKER_HEIGHT", s.blocker.quadtreeHeight);
+
+  // ---- moments ----------------------------------------------------------------------------
+  if (moments) {
+    defCode("SHADOWC_WARP", warpCode(s.moments.warp));
+    defCode("SHADOWC_SAT_KIND", satKindCode(s.storage.sat));
+    defBool("SHADOWC_MIPS", s.prefilter.mips);
+    defReal("SHADOWC_EXP_POSITIVE", s.moments.positiveExponent);
+    defReal("SHADOWC_EXP_NEGATIVE", s.moments.negativeExponent);
+    defReal("SHADOWC_MIN_VARIANCE", std::max(0.0, s.moments.minVariance));
+    // linstep(a, 1, p) divides by 1 - a (vsm-tutorial, lauritzen2008): keep a < 1.
+    defReal("SHADOWC_BLEEDING", std::clamp(s.moments.bleedingReduction, 0.0, 0.999));
+    defBool("SHADOWC_BLEEDING_ON", s.moments.bleedingReduction > 0.0);
+    defInt("SHADOWC_LAYERS", layers);
+    defReal("SHADOWC_OVERLAP", std::max(0.0, s.moments.overlap));
+    defBool("SHADOWC_LAYER_BLEND", layers > 1 && s.moments.overlap > 0.0);
+    if (layers > 1 && !splitsTexture)
+      out.tables.push_back(
+          RealTable{"shadowc_splitTable", "Layer split depths s_0..s_N (lauritzen2008 sec. 3.4)", s.moments.splits});
+  }
+
+  // ---- extras -----------------------------------------------------------------------------
+  defBool("SHADOWC_FALLBACK_PCF", s.fallback.pcf);
+  defInt("SHADOWC_FALLBACK_N", std::max(1, s.fallback.n));
+  defBool("SHADOWC_CONTACT", s.contact.enabled);
+  defInt("SHADOWC_CONTACT_N", std::max(1, s.contact.n));
+  defReal("SHADOWC_CONTACT_EPSILON", s.contact.epsilon);
+  defBool("SHADOWC_EARLY_OUT", s.earlyOutMinMax);
+  // The early out must cover the blur footprint too (shadowc_lookup.glsl, shadowc_influenceRect).
+  if (s.earlyOutMinMax && moments && s.prefilter.blur != BlurKind::None && s.prefilter.blurRadius > 0)
+    defInt("SHADOWC_EARLY_OUT_GROW", s.prefilter.blurRadius);
+  // Stability-suite demonstration only (FilterSpec::naiveUnguarded; validation/).
+  if (s.naiveUnguarded) defBool("SHADOWC_NAIVE_UNGUARDED", true);
+
+  // ---- generated tables -------------------------------------------------------------------
+  const bool depthPoisson =
+      (tech.code == kTechniquePcf || tech.code == kTechniquePcss) && s.sampling.pattern == PcfPattern::Poisson;
+  if (depthPoisson) {
+    out.tables.push_back(poissonTable("shadowc_poissonPcf", std::max(1, s.sampling.taps), 0x5eed0001u));
+    defBool("SHADOWC_HAS_POISSON_PCF", true);
+  }
+  const bool searches =
+      tech.code == kTechniquePcss || (tech.code == kTechniqueMoments && s.blocker.kind == BlockerKind::Search);
+  if (searches && s.blocker.pattern == SamplePattern::Poisson) {
+    out.tables.push_back(poissonTable("shadowc_poissonBlocker", std::max(1, s.blocker.taps), 0x5eed0002u));
+    defBool("SHADOWC_HAS_POISSON_BLOCKER", true);
+  }
+  if (vssm) {
+    const bool kernelQt = s.kernel.subdivision == Subdivision::Quadtree;
+    const bool blockerQt = s.blocker.subdivision == Subdivision::Quadtree;
+    if (kernelQt) check(s.kernel.quadtreeHeight >= 1 && s.kernel.quadtreeHeight <= 5, "quadtree height must be 1..5");
+    if (blockerQt)
+      check(s.blocker.quadtreeHeight >= 1 && s.blocker.quadtreeHeight <= 5, "quadtree height must be 1..5");
+    if (kernelQt || blockerQt) {
+      if (s.kernel.traversal == QuadtreeTraversal::Unrolled) {
+        if (kernelQt)
+          out.tables.push_back(UnrolledQuadtree{s.kernel.quadtreeHeight, "shadowc_qtUnrolledKernel", "shadowc_qtVisit",
+                                                "shadowc_qtLeaf"});
+        if (blockerQt)
+          out.tables.push_back(UnrolledQuadtree{s.blocker.quadtreeHeight, "shadowc_qtUnrolledBlocker",
+                                                "shadowc_qtVisit", "shadowc_qtLeaf"});
+      } else {
+        // One table of the larger height serves both walks (next() does not depend on depth).
+        const int h = std::max(kernelQt ? s.kernel.quadtreeHeight : 0, blockerQt ? s.blocker.quadtreeHeight : 0);
+        QuadtreeTables t = buildQuadtreeTables(h);
+        defInt("SHADOWC_QT_NODES", static_cast<long long>(t.nodes.size()));
+        out.tables.push_back(QuadtreeTableSet{"shadowc_qt", std::move(t)});
+      }
+    }
+  }
+  return out;
+}
+
+}  // namespace shadowc
