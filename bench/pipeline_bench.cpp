@@ -203,8 +203,8 @@ int main(int argc, char** argv) try {
       perPass += fmt::format("{}{} {:.0f}", perPass.empty() ? "" : ", ", name, ms);
       total += ms;
     }
-    fmt::print("| {} | {:.0f} | {:.0f} | {} | {:.2f} |\n", s.name, median(times), create, perPass,
-               (create + total) / 1000);
+    fmt::print("| {} | {:.0f} ({:.0f}) | {:.0f} | {} | {:.2f} | {:.1f} |\n", s.name, median(times), median(cpuTimes),
+               create, perPass, (create + total) / 1000, d.cpuSeconds);
     std::fflush(stdout);
   }
   return 0;

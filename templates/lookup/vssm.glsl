@@ -130,7 +130,10 @@ void shadowc_uniformWalk(int den) {
 // A dynamically indexed const table becomes an if-ladder per read in lavapipe, and the JIT time
 // of that grows much faster than the node count (docs/performance.md, "Pipeline creation").
 ivec3 shadowc_qtNextNode(ivec3 n) {
-  while (n.z > 1 && (n.x & n.y & 1) == 1) n = ivec3(n.xy >> 1, n.z >> 1);
+  // Levels to climb: the trailing ones of ix & iy (a last child has both low bits set), at
+  // most the node's level (findLSB(z) for z = 2^level); no loop.
+  int up = min(findLSB(~(n.x & n.y)), findLSB(n.z));
+  n = ivec3(n.xy >> up, n.z >> up);
   if (n.z <= 1) return ivec3(0);
   int c = (n.x & 1) + 2 * (n.y & 1) + 1;
   return ivec3((n.x & ~1) | (c & 1), (n.y & ~1) | (c >> 1), n.z);

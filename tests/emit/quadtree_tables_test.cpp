@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <random>
 #include <regex>
@@ -235,7 +237,8 @@ TEST(QuadtreeTables, ComputedNextEqualsTheNextTable) {
     int x, y, z;  // ix, iy, 2^level; z = 0 is Null
   };
   auto nextNode = [](N n) {
-    while (n.z > 1 && (n.x & n.y & 1) == 1) n = {n.x >> 1, n.y >> 1, n.z >> 1};
+    const int up = std::min(std::countr_one(static_cast<unsigned>(n.x & n.y)), std::countr_zero(static_cast<unsigned>(n.z)));
+    n = {n.x >> up, n.y >> up, n.z >> up};
     if (n.z <= 1) return N{0, 0, 0};
     const int c = (n.x & 1) + 2 * (n.y & 1) + 1;
     return N{(n.x & ~1) | (c & 1), (n.y & ~1) | (c >> 1), n.z};
