@@ -237,7 +237,8 @@ TEST(QuadtreeTables, ComputedNextEqualsTheNextTable) {
     int x, y, z;  // ix, iy, 2^level; z = 0 is Null
   };
   auto nextNode = [](N n) {
-    const int up = std::min(std::countr_one(static_cast<unsigned>(n.x & n.y)), std::countr_zero(static_cast<unsigned>(n.z)));
+    const int up =
+        std::min(std::countr_one(static_cast<unsigned>(n.x & n.y)), std::countr_zero(static_cast<unsigned>(n.z)));
     n = {n.x >> up, n.y >> up, n.z >> up};
     if (n.z <= 1) return N{0, 0, 0};
     const int c = (n.x & 1) + 2 * (n.y & 1) + 1;
