@@ -1,12 +1,12 @@
 // shadowc: compile soft-shadow filter descriptions to specialized GLSL/SPIR-V, run them on
 // lavapipe against a ray-traced ground truth. See docs/cli.md.
+#include <fmt/core.h>
+
 #include <cstdio>
 #include <exception>
 #include <string_view>
 #include <utility>
 #include <vector>
-
-#include <fmt/core.h>
 
 #include "cli/commands.h"
 
@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
   add(registerValidate);
   add(registerDemo);
   add(registerStability);
+  add(registerSweep);
+  add(registerAnalyze);
+  add(registerPlan);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

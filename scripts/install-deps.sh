@@ -10,6 +10,9 @@ PKGS=(
   libglm-dev libfmt-dev nlohmann-json3-dev libcli11-dev libstb-dev          # math, format, JSON, CLI, PNG
   libembree-dev libtbb-dev libassimp-dev zlib1g-dev              # reference, meshes (assimp links libz.so)
   libgtest-dev libgmock-dev libbenchmark-dev                                # tests and benchmarks
+  gnuplot-nox                                     # shadowc sweep: time-vs-RMSE plots (SVG, PNG)
+  chromium                                        # sweep report test: headless load and screenshot
+  slurm-wlm munge parallel                        # sweeps on a cluster: job array test, GNU parallel
   assimp-testmodels                             # real meshes of the duck/spider/engine scenes (/usr/share/assimp/models)
   ninja-build                                     # tests/integration drives a consumer with Ninja and make
   clang-14 libclang-rt-14-dev                     # libFuzzer + ASan/UBSan runtimes (scripts/fuzz.sh)

@@ -23,6 +23,8 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
   p->setup = setupFrame(p->scene, settings.map, settings.screen, settings.screen);
   p->raster = rasterize(ctx, p->scene, p->setup);
   const std::vector<float> positions = p->raster.gbufferPosition.floats();
+  p->mask = geometryMask(positions);
+  if (!settings.traceReference) return p;
   ProgressFn onProgress;
   if (progress)
     onProgress = [&progress](const ReferenceProgress& r) {
@@ -35,12 +37,14 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
   p->reference = std::move(reference.visibility);
   p->referenceFromCache = reference.fromCache;
   p->referenceCacheWarning = reference.cacheWarning;
-  p->mask = geometryMask(positions);
   return p;
 }
 
 SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, const PreparedScene& scene,
                           const RunOptions& options) {
+  if (scene.reference.size() != scene.mask.size())
+    throw std::invalid_argument("scene '" + scene.scene.name +
+                                "' was prepared without its reference (traceReference = false)");
   RunInputs inputs;
   inputs.frame = scene.setup.frame;
   inputs.mapSize = scene.setup.mapSize;

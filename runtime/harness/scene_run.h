@@ -26,6 +26,9 @@ struct SceneSettings {
   int referenceSamples = 16;             // light samples per axis for the Embree reference
   std::filesystem::path referenceCache;  // empty = the default cache ($SHADOWC_CACHE_DIR or ~/.cache/shadowc)
   bool useCache = true;
+  // false: rasterize only, no Embree trace (`shadowc analyze` reads the light depth map and the
+  // G-buffer alone); PreparedScene::reference stays empty and runOnScene refuses the scene.
+  bool traceReference = true;
 };
 
 // The scene side, computed once and reusable for many filters (a sweep runs every variant on it).

@@ -1,0 +1,139 @@
+// `shadowc plan --scene S [--scene S2 ...] --max-rmse E [--budget-ms T] -o FILE.shadow`: the
+// cheapest filter description that meets the bound on every scene, confirmed against the ground
+// truth (planning/planner.h, docs/planning.md). Also regenerates the model
+// (`--calibrate samples/plan/model.json`) and the docs table (`--report FILE.md`).
+#include <fmt/core.h>
+
+#include <cctype>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "planning/calibration.h"
+#include "planning/planner.h"
+#include "runtime/images/atomic_file.h"
+#include "runtime/vulkan/vulkan_context.h"
+
+namespace shadowc::cli {
+namespace {
+
+// A filter name from the output file's stem: [A-Za-z_][A-Za-z0-9_]*, at most 64 characters.
+std::string filterNameFrom(const std::string& path) {
+  std::string name;
+  for (char ch : std::filesystem::path(path).stem().string())
+    name += std::isalnum(static_cast<unsigned char>(ch)) ? ch : '_';
+  if (name.empty() || std::isdigit(static_cast<unsigned char>(name[0]))) name = "plan_" + name;
+  return name.substr(0, 64);
+}
+
+}  // namespace
+
+CommandRunner registerPlan(CLI::App& app) {
+  struct Options {
+    std::vector<std::string> scenes;
+    double maxRmse = -1, budgetMs = -1;
+    std::string out, model, calibrate, report, device;
+    uint32_t screen = 256, map = 1024;
+    int samples = 16, runs = 5, warmup = 2;
+  };
+  auto o = std::make_shared<Options>();
+  // The command as the user could type it again (recorded in the written files).
+  auto commandLine = [o] {
+    std::string s = "shadowc plan";
+    for (const std::string& sc : o->scenes) s += " --scene " + sc;
+    if (o->maxRmse >= 0) s += fmt::format(" --max-rmse {:g}", o->maxRmse);
+    if (o->budgetMs >= 0) s += fmt::format(" --budget-ms {:g}", o->budgetMs);
+    if (!o->calibrate.empty()) s += " --calibrate " + o->calibrate;
+    if (!o->report.empty()) s += " --report " + o->report;
+    s += fmt::format(" --screen {} --map {} --samples {} --runs {} --warmup {}", o->screen, o->map, o->samples, o->runs,
+                     o->warmup);
+    if (!o->out.empty()) s += " -o " + o->out;
+    return s;
+  };
+  CLI::App* sub = app.add_subcommand("plan", "Cheapest filter description that meets an error bound on the scenes");
+  sub->add_option("--scene", o->scenes, "Built-in scene name or scene .json file (repeat for several)");
+  sub->add_option("--max-rmse", o->maxRmse, "Largest RMSE against the ground truth, on every scene");
+  sub->add_option("--budget-ms", o->budgetMs, "Largest GPU time per frame (ms), on every scene");
+  sub->add_option("-o,--output", o->out, "Write the planned filter description here");
+  sub->add_option("--screen", o->screen, "Screen width and height in pixels")->capture_default_str();
+  sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
+  sub->add_option("--samples", o->samples, "Reference light samples per axis (N x N)")->capture_default_str();
+  sub->add_option("--runs", o->runs, "Timed runs per confirmation (the median counts)")->capture_default_str();
+  sub->add_option("--warmup", o->warmup, "Untimed warm-up runs per confirmation")->capture_default_str();
+  sub->add_option("--model", o->model, "Plan model JSON (default: the built-in samples/plan/model.json)");
+  sub->add_option("--calibrate", o->calibrate,
+                  "Measure every candidate on the scenes (default: all built-ins), write the model here");
+  sub->add_option("--report", o->report, "Write the docs/planning.md table (plan vs everything on vs exhaustive) here");
+  sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");
+  return [o, commandLine]() -> int {
+    if (o->screen == 0 || o->map == 0 || o->samples < 1 || o->runs < 1 || o->warmup < 0)
+      throw std::invalid_argument("--screen, --map, --samples and --runs must be positive, --warmup >= 0");
+    for (const std::string& s : o->scenes) (void)rt::loadScene(s);  // an unknown scene is one message, before any work
+    auto log = [](const std::string& line) { fmt::print(stderr, "shadowc: {}\n", line); };
+    const std::string command = commandLine();
+    if (!o->calibrate.empty() || !o->report.empty()) {
+      rt::VulkanContext ctx(rt::VulkanOptions{o->device, false});
+      planning::CalibrationRequest c;
+      c.scenes = o->scenes;
+      c.screen = o->screen;
+      c.map = o->map;
+      c.samples = o->samples;
+      c.runs = o->runs;
+      c.warmup = o->warmup;
+      c.command = command;
+      c.log = log;
+      if (!o->calibrate.empty()) {
+        const planning::PlanModel m = planning::calibrateModel(ctx, c);
+        rt::writeFileAtomically(o->calibrate, planning::modelToJson(m));
+        fmt::print("wrote the plan model ({} variants) to {}\n", m.variants.size(), o->calibrate);
+      }
+      if (!o->report.empty()) {
+        const planning::PlanModel m = planning::loadModel(o->model);
+        const auto rows = planning::planReport(ctx, c, m);
+        const std::string table = planning::formatReport(rows, c);
+        rt::writeFileAtomically(o->report, table);
+        fmt::print("{}", table);
+      }
+      return 0;
+    }
+    if (o->scenes.empty()) throw std::invalid_argument("plan: give at least one --scene");
+    if (o->out.empty()) throw std::invalid_argument("plan: give -o FILE.shadow");
+    if (o->maxRmse < 0 && o->budgetMs < 0)
+      throw std::invalid_argument("plan: give --max-rmse E, --budget-ms T or both");
+    const planning::PlanModel model = planning::loadModel(o->model);
+    planning::PlanRequest r;
+    r.scenes = o->scenes;
+    if (o->maxRmse >= 0) r.maxRmse = o->maxRmse;
+    if (o->budgetMs >= 0) r.budgetMs = o->budgetMs;
+    r.screen = o->screen;
+    r.map = o->map;
+    r.samples = o->samples;
+    r.runs = o->runs;
+    r.warmup = o->warmup;
+    r.filterName = filterNameFrom(o->out);
+    r.command = command;
+    r.log = log;
+    rt::VulkanContext ctx(rt::VulkanOptions{o->device, false});
+    try {
+      const planning::PlanResult p = planning::plan(ctx, r, model);
+      rt::writeFileAtomically(o->out, p.text);
+      fmt::print("planned  {} -> {}\n", p.chosen.name, o->out);
+      for (size_t i = 0; i < p.stats.size(); ++i)
+        fmt::print("  {:<24} rmse {:.4f}  {:.2f} ms\n", p.stats[i].scene, p.measured.rmse[i], p.measured.ms[i]);
+      fmt::print("tried   ");
+      for (const auto& t : p.tried) fmt::print(" {} ({:.4f}, {:.2f} ms)", t.variant, t.worstRmse, t.worstMs);
+      fmt::print("\n");
+    } catch (const planning::PlanError& e) {
+      std::fflush(stdout);
+      fmt::print(stderr, "shadowc: error: {}\n", e.what());
+      return 1;
+    }
+    return 0;
+  };
+}
+
+}  // namespace shadowc::cli

@@ -1,0 +1,247 @@
+#include "planning/candidates.h"
+
+#include <fmt/core.h>
+
+#include "spec/print_filter.h"
+
+namespace shadowc::planning {
+namespace {
+
+Candidate depthFixed(std::string name, std::string family, int texels) {
+  Candidate c;
+  c.name = std::move(name);
+  c.family = std::move(family);
+  c.fixedTexels = texels;
+  return c;
+}
+
+Candidate pcss(int pcfTaps) {
+  Candidate c;
+  c.name = fmt::format("pcss_poisson{}", pcfTaps);
+  c.family = "pcss";
+  c.blocker = c.penumbraKernel = true;
+  c.pcfTaps = pcfTaps;
+  return c;
+}
+
+Candidate vssm(bool quadtree, int height, bool fallback, bool contact, bool earlyOut) {
+  Candidate c;
+  c.family = "vssm";
+  c.blocker = c.sat = c.penumbraKernel = true;
+  c.quadtree = quadtree;
+  c.quadtreeHeight = height;
+  c.fallback = fallback;
+  c.contact = contact;
+  c.earlyOut = earlyOut;
+  c.name = quadtree ? fmt::format("vssm_quadtree{}", height) : fmt::format("vssm_uniform{}", c.uniformN);
+  if (fallback) c.name += "_fallback";
+  if (contact) c.name += "_contact";
+  if (earlyOut) c.name += "_early_out";
+  return c;
+}
+
+std::vector<Candidate> buildCatalog() {
+  std::vector<Candidate> v;
+  v.push_back(depthFixed("hard", "hard", 1));
+  v.push_back(depthFixed("pcf_grid3", "pcf", 3));
+  v.push_back(depthFixed("pcf_grid5", "pcf", 5));
+  Candidate layered;
+  layered.name = "layered_vsm4";
+  layered.family = "layered_vsm";
+  layered.layers = 4;
+  v.push_back(layered);
+  v.push_back(pcss(16));
+  v.push_back(pcss(32));
+  v.push_back(vssm(false, 0, false, false, false));
+  v.push_back(vssm(false, 0, false, true, false));
+  v.push_back(vssm(false, 0, true, false, false));
+  v.push_back(vssm(true, 2, false, false, false));
+  v.push_back(vssm(true, 2, true, false, false));
+  v.push_back(vssm(true, 2, false, false, true));
+  v.push_back(vssm(true, 2, true, true, false));
+  v.push_back(vssm(true, 3, true, true, true));  // everything on, the paper's height 3
+  return v;
+}
+
+}  // namespace
+
+const char* featureName(Feature f) {
+  switch (f) {
+    case Feature::BlockerSearch:
+      return "blocker search";
+    case Feature::Sat:
+      return "SAT";
+    case Feature::PenumbraKernel:
+      return "penumbra kernel";
+    case Feature::Quadtree:
+      return "quadtree subdivision";
+    case Feature::Fallback:
+      return "PCF fallback";
+    case Feature::Contact:
+      return "contact path";
+    case Feature::EarlyOut:
+      return "min-max early out";
+    case Feature::Layers:
+      return "layers";
+    case Feature::SlopeBias:
+      return "slope-scaled bias";
+  }
+  return "?";
+}
+
+bool Candidate::has(Feature f) const {
+  switch (f) {
+    case Feature::BlockerSearch:
+      return blocker;
+    case Feature::Sat:
+      return sat;
+    case Feature::PenumbraKernel:
+      return penumbraKernel;
+    case Feature::Quadtree:
+      return quadtree;
+    case Feature::Fallback:
+      return fallback;
+    case Feature::Contact:
+      return contact;
+    case Feature::EarlyOut:
+      return earlyOut;
+    case Feature::Layers:
+      return layers > 1;
+    case Feature::SlopeBias:
+      return family == "hard" || family == "pcf" || family == "pcss";
+  }
+  return false;
+}
+
+const std::vector<Candidate>& candidateCatalog() {
+  static const std::vector<Candidate> catalog = buildCatalog();
+  return catalog;
+}
+
+const Candidate& everythingOn() { return candidateCatalog().back(); }
+
+const Candidate* findCandidate(const std::string& name) {
+  for (const Candidate& c : candidateCatalog())
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+FilterSpec candidateSpec(const Candidate& c, const DescribeOptions& o) {
+  FilterSpec s;
+  s.name = o.filterName;
+  s.light.shape = LightShape::Rect;
+  s.light.sizeFromScene = true;  // the runtime supplies the scene's light width
+  const bool depthFamily = c.family == "hard" || c.family == "pcf" || c.family == "pcss";
+  if (depthFamily) {
+    s.representation = Representation::Depth;
+    if (c.blocker) {
+      // pcss-blog.txt: Poisson blocker search, penumbra estimate, Poisson PCF of that width.
+      s.blocker.kind = BlockerKind::Search;
+      s.blocker.taps = c.searchTaps;
+      s.blocker.pattern = SamplePattern::Poisson;
+      s.kernel.size = KernelSize::Penumbra;
+      s.kernel.maxTexels = 64;
+      s.sampling.pattern = PcfPattern::Poisson;
+      s.sampling.taps = c.pcfTaps;
+      s.sampling.rotation = Rotation::Stable;
+    } else {
+      s.kernel.size = KernelSize::Fixed;
+      s.kernel.fixedTexels = c.fixedTexels;
+      s.sampling.pattern = PcfPattern::Grid;
+      s.sampling.gridN = c.fixedTexels;
+    }
+    if (o.slopeBias) {
+      s.bias.kind = BiasKind::SlopeScaled;  // max(slope (1 - N.L), constant), pcss-blog.txt
+      s.bias.slope = 0.005;
+      s.bias.constant = 0.001;
+    } else {
+      s.bias.kind = BiasKind::Constant;
+      s.bias.constant = 0.001;
+    }
+    return s;
+  }
+  s.representation = Representation::Moments;
+  s.moments.warp = Warp::Linear;
+  s.moments.layers = c.layers;
+  s.moments.split = SplitPlacement::Uniform;
+  s.moments.splits.clear();
+  for (int i = 0; i <= c.layers; ++i) s.moments.splits.push_back(double(i) / c.layers);
+  s.kernel.size = KernelSize::Fixed;
+  s.kernel.fixedTexels = 1;
+  if (c.family == "layered_vsm") {
+    // lauritzen2008 sec. 3-4: uniform splits with a small overlap, box-blurred moments.
+    s.moments.overlap = 0.02;
+    s.prefilter.blur = BlurKind::Box;
+    s.prefilter.blurRadius = 2;
+    return s;
+  }
+  // VSSM (vssm-yang2010): int32 SAT (sec. 6.4), eq. 4 blocker estimate with the paper's mixed
+  // scheme (uniform m = 5), uniform or quadtree kernel (sec. 5.2-5.3).
+  s.storage.sat = SatKind::Int32;
+  s.blocker.kind = BlockerKind::Moments;
+  s.blocker.subdivision = Subdivision::Uniform;
+  s.blocker.uniformM = 5;
+  s.kernel.size = KernelSize::Penumbra;
+  s.kernel.maxTexels = 128;
+  s.kernel.subdivision = c.quadtree ? Subdivision::Quadtree : Subdivision::Uniform;
+  s.kernel.quadtreeHeight = c.quadtreeHeight > 0 ? c.quadtreeHeight : s.kernel.quadtreeHeight;
+  s.kernel.uniformN = c.uniformN;
+  s.fallback.pcf = c.fallback;
+  s.fallback.n = 2;
+  s.contact.enabled = c.contact;
+  s.contact.n = 3;
+  s.contact.epsilon = o.contactEpsilon;
+  s.earlyOutMinMax = c.earlyOut;
+  return s;
+}
+
+namespace {
+
+// The setting a feature's comment sits above in printFilter's output.
+const char* settingOf(Feature f) {
+  switch (f) {
+    case Feature::BlockerSearch:
+      return "blocker";
+    case Feature::Sat:
+      return "storage";
+    case Feature::PenumbraKernel:
+      return "kernel";
+    case Feature::Quadtree:
+      return "kernel";
+    case Feature::Fallback:
+      return "fallback";
+    case Feature::Contact:
+      return "contact";
+    case Feature::EarlyOut:
+      return "early_out";
+    case Feature::Layers:
+      return "representation";
+    case Feature::SlopeBias:
+      return "bias";
+  }
+  return "";
+}
+
+}  // namespace
+
+std::string describeCandidate(const Candidate& c, const DescribeOptions& o) {
+  const std::string printed = printFilter(candidateSpec(c, o));  // spec/print_filter.h: every argument named
+  std::string out;
+  for (const std::string& line : o.header) out += line.empty() ? "#\n" : "# " + line + "\n";
+  size_t pos = 0;
+  while (pos < printed.size()) {
+    const size_t eol = printed.find('\n', pos);
+    const std::string line = printed.substr(pos, eol == std::string::npos ? std::string::npos : eol - pos);
+    pos = eol == std::string::npos ? printed.size() : eol + 1;
+    std::string key = line.size() > 4 ? line.substr(4, line.find(' ', 4) - 4) : "";
+    if (key == "depth" || key == "moments") key = "representation";
+    for (Feature f : kFeatures) {
+      auto it = o.featureComments.find(f);
+      if (it != o.featureComments.end() && key == settingOf(f)) out += "    # " + it->second + "\n";
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+}  // namespace shadowc::planning

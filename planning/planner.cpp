@@ -1,0 +1,261 @@
+#include "planning/planner.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "driver/driver.h"
+#include "runtime/vulkan/vulkan_context.h"
+
+namespace shadowc::planning {
+namespace {
+
+std::string sceneList(const PlanScenes& s) {
+  std::string out;
+  for (const SceneStats& st : s.stats) out += (out.empty() ? "" : ",") + st.scene;
+  return out;
+}
+
+// The worst scene of a statistic (the one that needs the feature most) and its value.
+template <class F>
+std::pair<double, std::string> worst(const std::vector<SceneStats>& stats, F value, bool highest) {
+  double best = highest ? -1e300 : 1e300;
+  std::string name;
+  for (const SceneStats& s : stats) {
+    const double v = value(s);
+    if (highest ? v > best : v < best) {
+      best = v;
+      name = s.scene;
+    }
+  }
+  return {best, name};
+}
+
+std::string where(const std::vector<SceneStats>& stats, const std::string& scene) {
+  return stats.size() > 1 ? fmt::format(" (worst scene: {})", scene) : "";
+}
+
+}  // namespace
+
+PlanScenes preparePlanScenes(rt::VulkanContext& ctx, const std::vector<std::string>& scenes, uint32_t screen,
+                             uint32_t map, int samples, double contactEpsilon) {
+  PlanScenes out;
+  std::vector<rt::Scene> loaded;
+  for (const std::string& s : scenes) loaded.push_back(rt::loadScene(s));  // every scene error before any work
+  for (size_t i = 0; i < scenes.size(); ++i) {
+    rt::SceneSettings settings;
+    settings.scene = scenes[i];
+    settings.screen = screen;
+    settings.map = map;
+    settings.referenceSamples = samples;
+    out.prepared.push_back(rt::prepareScene(ctx, std::move(loaded[i]), settings));
+    AnalysisOptions options;
+    options.contactEpsilon = contactEpsilon;
+    out.stats.push_back(analyzeScene(*out.prepared.back(), options));
+  }
+  return out;
+}
+
+bool useSlopeBias(const std::vector<SceneStats>& stats, const PlanRules& rules) {
+  return worst(
+             stats, [](const SceneStats& s) { return s.slopeDegrees.p99; }, true)
+             .first > rules.slopeDegrees;
+}
+
+Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
+                             const PlanModel& model, int warmup, int runs, std::map<std::string, Measurement>* cache) {
+  DescribeOptions d;
+  d.slopeBias = useSlopeBias(scenes.stats, model.rules);
+  d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
+  const std::string key = c.name + "|" + sceneList(scenes) + "|" + (d.slopeBias ? "slope" : "constant");
+  if (cache) {
+    auto it = cache->find(key);
+    if (it != cache->end()) return it->second;
+  }
+  const std::string text = describeCandidate(c, d);
+  const driver::Result r = driver::compileSpec(candidateSpec(c, d));
+  if (!r.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile:\n" + r.log + text);
+  const CompiledPasses passes = r.artifact->passes();
+  Measurement m;
+  m.variant = c.name;
+  for (const auto& prepared : scenes.prepared) {
+    rt::RunOptions options;
+    options.warmup = warmup;
+    options.runs = runs;
+    const rt::SceneRunResult run = rt::runOnScene(ctx, passes, *prepared, options);
+    m.rmse.push_back(run.metrics.rmse);
+    m.ms.push_back(run.outputs.timing->totalMs);
+    m.worstRmse = std::max(m.worstRmse, run.metrics.rmse);
+    m.worstMs = std::max(m.worstMs, run.outputs.timing->totalMs);
+  }
+  if (cache) (*cache)[key] = m;
+  return m;
+}
+
+std::map<Feature, FeatureVerdict> featureVerdicts(const std::vector<SceneStats>& stats, const PlanRules& r,
+                                                  const std::vector<std::string>&) {
+  std::map<Feature, FeatureVerdict> v;
+  // Blocker search and the penumbra-sized kernel: only where penumbrae are wider than a fixed kernel.
+  const auto narrow = worst(
+      stats, [&](const SceneStats& s) { return s.fractionPenumbraBelow(r.penumbraTexels); }, false);
+  const bool soft = narrow.first < r.penumbraQuantile;
+  const std::string narrowText = fmt::format("{:.1f} % of penumbrae < {:g} texels{}", 100.0 * narrow.first,
+                                             r.penumbraTexels, where(stats, narrow.second));
+  v[Feature::BlockerSearch] = {!soft, narrowText};
+  v[Feature::PenumbraKernel] = {!soft, narrowText};
+  const auto wide = worst(
+      stats, [](const SceneStats& s) { return s.penumbraTexels.p99; }, true);
+  v[Feature::Sat] = {!soft || wide.first < r.satTexels,
+                     fmt::format("p99 penumbra {:.1f} texels (SAT ruled out below {:g}){}", wide.first, r.satTexels,
+                                 where(stats, wide.second))};
+  v[Feature::Quadtree] = {!soft || wide.first < r.quadtreeTexels,
+                          fmt::format("p99 penumbra {:.1f} texels (quadtree ruled out below {:g}){}", wide.first,
+                                      r.quadtreeTexels, where(stats, wide.second))};
+  const auto multi = worst(
+      stats, [](const SceneStats& s) { return s.multiDepthFraction(); }, true);
+  const std::string multiText =
+      fmt::format("{:.1f} % of penumbra kernel regions hold occluders at >= 2 distinct depths{}", 100.0 * multi.first,
+                  where(stats, multi.second));
+  v[Feature::Fallback] = {!soft || multi.first <= r.multiDepthFraction, multiText};
+  v[Feature::Layers] = {multi.first <= r.multiDepthFraction, multiText};
+  const auto contact = worst(
+      stats, [](const SceneStats& s) { return s.contactFraction(); }, true);
+  v[Feature::Contact] = {!soft || contact.first <= r.contactFraction,
+                         fmt::format("{:.2f} % of receivers within {:g} of a blocker{}", 100.0 * contact.first,
+                                     stats.empty() ? 0.01 : stats[0].contactEpsilon, where(stats, contact.second))};
+  const auto uniform = worst(
+      stats, [](const SceneStats& s) { return s.uniformFraction(); }, false);
+  v[Feature::EarlyOut] = {!soft || uniform.first < r.uniformFraction,
+                          fmt::format("{:.1f} % of receivers fully lit or in umbra{}", 100.0 * uniform.first,
+                                      where(stats, uniform.second))};
+  const auto slope = worst(
+      stats, [](const SceneStats& s) { return s.slopeDegrees.p99; }, true);
+  v[Feature::SlopeBias] = {slope.first <= r.slopeDegrees,
+                           fmt::format("p99 receiver slope {:.1f} degrees (slope-scaled above {:g}){}", slope.first,
+                                       r.slopeDegrees, where(stats, slope.second))};
+  return v;
+}
+
+PlanResult plan(rt::VulkanContext& ctx, const PlanRequest& request, const PlanModel& model) {
+  if (request.scenes.empty()) throw PlanError("give at least one --scene");
+  if (request.log) request.log("preparing the scenes (rasterize, Embree reference, analysis)");
+  const PlanScenes scenes = preparePlanScenes(ctx, request.scenes, request.screen, request.map, request.samples, 0.01);
+  return planOnScenes(ctx, request, model, scenes);
+}
+
+PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, const PlanModel& model,
+                        const PlanScenes& scenes, std::map<std::string, Measurement>* cache) {
+  if (!request.maxRmse && !request.budgetMs) throw PlanError("give --max-rmse E, --budget-ms T or both");
+  const std::map<Feature, FeatureVerdict> verdicts = featureVerdicts(scenes.stats, model.rules, request.scenes);
+  struct Option {
+    const Candidate* c;
+    bool allowed;
+    double ms, rmse;  // predicted, worst over scenes
+  };
+  std::vector<Option> options;
+  for (const Candidate& c : candidateCatalog()) {
+    if (!model.variants.count(c.name)) continue;
+    Option o{&c, true, 0, 0};
+    for (Feature f : kFeatures)
+      if (f != Feature::SlopeBias && c.has(f) && verdicts.at(f).ruledOut) o.allowed = false;
+    o.ms = model.predictMs(c.name, request.map, request.screen);
+    for (const SceneStats& s : scenes.stats) o.rmse = std::max(o.rmse, model.predictRmse(c.name, s));
+    options.push_back(o);
+  }
+  // Confirmation order: candidates the statistics allow and the model predicts within the
+  // bound (cheapest first; most accurate first with only a budget), then the other allowed
+  // ones, then those a statistic ruled out (a prediction can be wrong; a measurement cannot).
+  const double margin = model.rules.confirmMargin;
+  auto stage = [&](const Option& o) {
+    const bool predictedOk = (!request.maxRmse || o.rmse <= *request.maxRmse * margin) &&
+                             (!request.budgetMs || o.ms <= *request.budgetMs * margin);
+    return o.allowed ? (predictedOk ? 0 : 1) : 2;
+  };
+  std::stable_sort(options.begin(), options.end(), [&](const Option& a, const Option& b) {
+    if (stage(a) != stage(b)) return stage(a) < stage(b);
+    return request.maxRmse ? a.ms < b.ms : a.rmse < b.rmse;
+  });
+  PlanResult result;
+  result.stats = scenes.stats;
+  const Option* chosen = nullptr;
+  const bool budgetOnly = !request.maxRmse;
+  for (const Option& o : options) {
+    if (chosen && !budgetOnly) break;
+    if (chosen && budgetOnly && stage(o) > 0) break;  // with only a budget, compare the predicted-ok ones
+    if (request.log)
+      request.log(fmt::format("confirming {} (predicted {:.4f} rmse, {:.2f} ms)", o.c->name, o.rmse, o.ms));
+    const Measurement m = measureCandidate(ctx, *o.c, scenes, model, request.warmup, request.runs, cache);
+    result.tried.push_back(m);
+    const bool meets =
+        (!request.maxRmse || m.worstRmse <= *request.maxRmse) && (!request.budgetMs || m.worstMs <= *request.budgetMs);
+    if (!meets) continue;
+    if (!chosen || m.worstRmse < result.measured.worstRmse) {
+      chosen = &o;
+      result.measured = m;
+    }
+  }
+  if (!chosen) {
+    const auto byRmse =
+        std::min_element(result.tried.begin(), result.tried.end(),
+                         [](const Measurement& a, const Measurement& b) { return a.worstRmse < b.worstRmse; });
+    const auto byMs =
+        std::min_element(result.tried.begin(), result.tried.end(),
+                         [](const Measurement& a, const Measurement& b) { return a.worstMs < b.worstMs; });
+    if (request.maxRmse && byRmse->worstRmse > *request.maxRmse)
+      throw PlanError(
+          fmt::format("--max-rmse {:g} is unreachable on {}: the best reachable bound is {:.4f} (variant {}, "
+                      "{:.2f} ms)",
+                      *request.maxRmse, sceneList(scenes), byRmse->worstRmse, byRmse->variant, byRmse->worstMs));
+    throw PlanError(
+        fmt::format("no variant meets --budget-ms {:g}{} on {}: the fastest is {} at {:.2f} ms (rmse {:.4f})",
+                    *request.budgetMs, request.maxRmse ? fmt::format(" within --max-rmse {:g}", *request.maxRmse) : "",
+                    sceneList(scenes), byMs->variant, byMs->worstMs, byMs->worstRmse));
+  }
+  result.chosen = *chosen->c;
+  result.predictedMs = chosen->ms;
+  result.predictedRmse = chosen->rmse;
+
+  // The written file: one comment per feature with the statistic that decided it.
+  DescribeOptions d;
+  d.filterName = request.filterName;
+  d.slopeBias = useSlopeBias(scenes.stats, model.rules);
+  d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
+  const bool depthFamily = result.chosen.has(Feature::SlopeBias);
+  for (Feature f : kFeatures) {
+    const FeatureVerdict& v = verdicts.at(f);
+    std::string line;
+    if (f == Feature::SlopeBias) {
+      line = !depthFamily
+                 ? fmt::format("{} dropped: moment filters take no depth bias; {}", featureName(f), v.statistic)
+             : d.slopeBias ? fmt::format("{} kept: {}", featureName(f), v.statistic)
+                           : fmt::format("{} dropped: {}", featureName(f), v.statistic);
+    } else if (result.chosen.has(f)) {
+      line = v.ruledOut ? fmt::format("{} kept: {}, but every variant without it missed the bound", featureName(f),
+                                      v.statistic)
+                        : fmt::format("{} kept: {}", featureName(f), v.statistic);
+    } else {
+      line = v.ruledOut ? fmt::format("{} dropped: {}", featureName(f), v.statistic)
+                        : fmt::format("{} dropped: {}; the cheapest variant within the bound does without it",
+                                      featureName(f), v.statistic);
+    }
+    d.featureComments[f] = line;
+  }
+  std::string bound;
+  if (request.maxRmse) bound += fmt::format("rmse <= {:g}", *request.maxRmse);
+  if (request.budgetMs) bound += fmt::format("{}time <= {:g} ms", bound.empty() ? "" : ", ", *request.budgetMs);
+  d.header = {
+      fmt::format("Planned by `{}` (docs/planning.md).", request.command.empty() ? "shadowc plan" : request.command),
+      fmt::format("Scenes: {}; bound {}; screen {}^2, map {}^2, reference {}x{} light samples.", sceneList(scenes),
+                  bound, request.screen, request.map, request.samples, request.samples),
+      fmt::format("Variant {} (model: {:.4f} rmse, {:.2f} ms); measured rmse per scene:", result.chosen.name,
+                  result.predictedRmse, result.predictedMs)};
+  std::string perScene;
+  for (size_t i = 0; i < scenes.stats.size(); ++i)
+    perScene += fmt::format("{}{} {:.4f}", i ? ", " : "  ", scenes.stats[i].scene, result.measured.rmse[i]);
+  d.header.push_back(perScene);
+  result.text = describeCandidate(result.chosen, d);
+  return result;
+}
+
+}  // namespace shadowc::planning

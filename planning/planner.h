@@ -1,0 +1,89 @@
+// The planner behind `shadowc plan` (docs/planning.md): scene statistics rule features out,
+// the model (plan_model.h) orders the remaining candidates (candidates.h) by predicted cost,
+// and every pick is confirmed by running it through the run harness against the ground truth;
+// a pick that misses the bound makes it try the next candidate. Several scenes plan one filter:
+// a feature is ruled out only when every scene rules it out, and a candidate must meet the bound
+// on every scene.
+#pragma once
+
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "planning/candidates.h"
+#include "planning/plan_model.h"
+#include "planning/scene_analysis.h"
+#include "runtime/harness/scene_run.h"
+
+namespace shadowc::rt {
+class VulkanContext;
+}
+
+namespace shadowc::planning {
+
+// A request the planner cannot meet (unreachable bound, a budget nothing meets): one message.
+struct PlanError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct PlanRequest {
+  std::vector<std::string> scenes;  // built-in names or .json paths
+  std::optional<double> maxRmse;    // at least one of maxRmse, budgetMs
+  std::optional<double> budgetMs;
+  uint32_t screen = 256, map = 1024;
+  int samples = 16;  // reference light samples per axis
+  int warmup = 2, runs = 5;
+  std::string filterName = "planned";
+  std::string command;                          // echoed in the written file's header
+  std::function<void(const std::string&)> log;  // progress lines (stderr)
+};
+
+// One candidate measured on every scene of a request.
+struct Measurement {
+  std::string variant;
+  std::vector<double> rmse, ms;  // per scene
+  double worstRmse = 0, worstMs = 0;
+};
+
+// The scenes of a request, prepared once (rasterized + reference) and analyzed.
+struct PlanScenes {
+  std::vector<std::shared_ptr<const rt::PreparedScene>> prepared;
+  std::vector<SceneStats> stats;
+};
+PlanScenes preparePlanScenes(rt::VulkanContext& ctx, const std::vector<std::string>& scenes, uint32_t screen,
+                             uint32_t map, int samples, double contactEpsilon);
+
+// Compiles a candidate (described for these scenes) and runs it on each of them. Results are
+// cached per (variant, scenes) in `cache` when given.
+Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
+                             const PlanModel& model, int warmup, int runs,
+                             std::map<std::string, Measurement>* cache = nullptr);
+
+// Why each feature may or may not be used: the statistic and whether it rules the feature out.
+struct FeatureVerdict {
+  bool ruledOut = false;
+  std::string statistic;  // "99.6 % of penumbrae < 1.5 texels"
+};
+std::map<Feature, FeatureVerdict> featureVerdicts(const std::vector<SceneStats>& stats, const PlanRules& rules,
+                                                  const std::vector<std::string>& sceneNames);
+bool useSlopeBias(const std::vector<SceneStats>& stats, const PlanRules& rules);
+
+struct PlanResult {
+  Candidate chosen;
+  Measurement measured;            // of the chosen candidate
+  std::vector<Measurement> tried;  // in the order they were confirmed
+  std::vector<SceneStats> stats;
+  std::string text;  // the filter description written to -o
+  double predictedMs = 0, predictedRmse = 0;
+};
+
+PlanResult plan(rt::VulkanContext& ctx, const PlanRequest& request, const PlanModel& model);
+// The same on scenes already prepared (the report reuses measurements through `cache`).
+PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, const PlanModel& model,
+                        const PlanScenes& scenes, std::map<std::string, Measurement>* cache = nullptr);
+
+}  // namespace shadowc::planning

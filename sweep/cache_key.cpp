@@ -1,0 +1,24 @@
+#include "sweep/cache_key.h"
+
+#include "emit/content_hash.h"
+#include "sweep/results_io.h"
+
+namespace shadowc::sweep {
+
+std::string cacheKey(const KeyInputs& in) {
+  nlohmann::ordered_json j;
+  j["results_version"] = kResultsVersion;  // a new row format invalidates old entries
+  j["spec"] = in.spec;
+  j["shader"] = in.shader;
+  j["scene_hash"] = in.sceneHash;
+  j["screen"] = in.screen;
+  j["map"] = in.map;
+  j["reference_samples"] = in.referenceSamples;
+  j["runs"] = in.runs;
+  j["warmup"] = in.warmup;
+  j["device"] = in.device;
+  const std::string h = contentHash({EmittedFile{"sweep-row", j.dump()}});
+  return h.substr(h.find(':') + 1);
+}
+
+}  // namespace shadowc::sweep

@@ -1,0 +1,59 @@
+#include "sweep/frontier_table.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <set>
+
+#include "sweep/pareto.h"
+
+namespace shadowc::sweep {
+namespace {
+
+// The two or three passes that take the time, so a reader sees where it goes.
+std::string topPasses(const Row& r) {
+  std::vector<PassTime> p = r.passes;
+  std::stable_sort(p.begin(), p.end(), [](const PassTime& a, const PassTime& b) { return a.medianMs > b.medianMs; });
+  std::string out;
+  for (size_t i = 0; i < p.size() && i < 3; ++i)
+    out += fmt::format("{}{} {:.2f}", i ? ", " : "", p[i].name, p[i].medianMs);
+  return out;
+}
+
+}  // namespace
+
+std::string formatFrontierTables(const Results& res, bool allRows) {
+  const auto front = frontiers(res.rows);
+  std::map<size_t, std::vector<size_t>> byCase;
+  for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
+  std::string out;
+  for (const auto& [c, members] : byCase) {
+    const auto it = front.find(c);
+    const std::vector<size_t> frontier = it == front.end() ? std::vector<size_t>{} : it->second;
+    const std::set<size_t> onFrontier(frontier.begin(), frontier.end());
+    std::vector<size_t> shown = allRows ? members : frontier;
+    if (allRows)
+      std::stable_sort(shown.begin(), shown.end(),
+                       [&](size_t a, size_t b) { return res.rows[a].totalMs < res.rows[b].totalMs; });
+    size_t width = 7;
+    for (size_t i : shown) width = std::max(width, res.rows[i].variant.size());
+    const Row& first = res.rows[members.front()];
+    out +=
+        fmt::format("{} {}: {} of {} rows on the frontier (time = median frame total, RMSE vs the Embree reference)\n",
+                    allRows ? "trade-off" : "frontier", first.caseLabel, frontier.size(), members.size());
+    out += fmt::format("  {:>3}  {:<{}}  {:>10}  {:>9}  {}\n", "#", "variant", width, "total ms", "rmse",
+                       "slowest passes (ms)");
+    size_t rank = 0;
+    for (size_t i : shown) {
+      const Row& r = res.rows[i];
+      const std::string mark = allRows ? (onFrontier.count(i) ? "*" : " ") : fmt::format("{}", ++rank);
+      out += fmt::format("  {:>3}  {:<{}}  {:>10.3f}  {:>9.5f}  {}\n", mark, r.variant, width, r.totalMs,
+                         r.metrics.rmse, topPasses(r));
+    }
+    if (allRows) out += "  (* = on the frontier: nothing else here is both faster and more accurate)\n";
+  }
+  return out;
+}
+
+}  // namespace shadowc::sweep

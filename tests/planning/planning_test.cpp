@@ -1,0 +1,253 @@
+// `shadowc analyze` / `shadowc plan` (planning/, docs/planning.md) on small screens and maps:
+// the statistics against closed forms, the features each kind of scene plans to, pruning down
+// to the manifest, GLSL and SPIR-V, the comments, and the three error cases.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "driver/driver.h"
+#include "planning/planner.h"
+#include "runtime/images/atomic_file.h"
+#include "runtime/vulkan/vulkan_context.h"
+#include "support/test_support.h"
+
+namespace shadowc {
+namespace {
+
+constexpr uint32_t kScreen = 64, kMap = 256;
+constexpr int kSamples = 8;
+
+rt::VulkanContext& context() {
+  static rt::VulkanContext ctx;
+  return ctx;
+}
+
+// two_planes (one flat occluder at y = 2 over the floor, light at y = 6) with another light size.
+std::string twoPlanesWithLight(double size, const std::string& tag) {
+  nlohmann::json j = nlohmann::json::parse(rt::builtinSceneJson("two_planes"));
+  j["light"]["size"] = size;
+  j["name"] = "two_planes_light_" + tag;
+  const auto path = test::freshTempDir("planning_" + tag) / "scene.json";
+  rt::writeFileAtomically(path, j.dump(2));
+  return path.string();
+}
+
+planning::PlanResult planFor(const std::vector<std::string>& scenes, double maxRmse) {
+  planning::PlanRequest r;
+  r.scenes = scenes;
+  r.maxRmse = maxRmse;
+  r.screen = kScreen;
+  r.map = kMap;
+  r.samples = kSamples;
+  r.warmup = 0;
+  r.runs = 1;
+  r.filterName = "planned_test";
+  return planning::plan(context(), r, planning::loadModel());
+}
+
+driver::Artifact compiled(const std::string& text) {
+  const driver::Result r = driver::compileSource(text, "planned.shadow");
+  EXPECT_TRUE(r.artifact) << r.log << text;
+  return *r.artifact;
+}
+
+bool anyFileHas(const driver::Artifact& a, const std::string& suffix, const std::string& needle) {
+  for (const auto& f : a.files)
+    if (f.name.size() >= suffix.size() && f.name.compare(f.name.size() - suffix.size(), suffix.size(), suffix) == 0 &&
+        f.bytes.find(needle) != std::string::npos)
+      return true;
+  return false;
+}
+
+// A 32-bit float constant in any .spv file (OpConstant words hold the value's bits).
+bool spirvHoldsFloat(const driver::Artifact& a, float value) {
+  uint32_t bits;
+  std::memcpy(&bits, &value, 4);
+  for (const auto& f : a.files) {
+    if (f.name.size() < 4 || f.name.substr(f.name.size() - 4) != ".spv") continue;
+    for (size_t i = 20; i + 4 <= f.bytes.size(); i += 4) {
+      uint32_t w;
+      std::memcpy(&w, f.bytes.data() + i, 4);
+      if (w == bits) return true;
+    }
+  }
+  return false;
+}
+
+TEST(Analysis, TwoPlanesPenumbraMatchesTheClosedForm) {
+  rt::SceneSettings s;
+  s.scene = "two_planes";
+  s.screen = kScreen;
+  s.map = kMap;
+  s.traceReference = false;
+  const auto prepared = rt::prepareScene(context(), s);
+  EXPECT_TRUE(prepared->reference.empty());  // analysis needs no reference
+  const planning::SceneStats st = planning::analyzeScene(*prepared);
+  // Occluder at view z 4, floor at z 6, light width 1: w = W (zr - zb) / (zb 2 zr tanHalfFov) uv.
+  const double tanHalf = prepared->setup.frame.lightParams[0];
+  const double expected = 1.0 * (6.0 - 4.0) / (4.0 * 2.0 * 6.0 * tanHalf) * kMap;
+  ASSERT_GT(st.penumbra, 0u);
+  EXPECT_NEAR(st.penumbraTexels.p50, expected, 0.01 * expected);
+  EXPECT_EQ(st.contact, 0u);                     // the occluder is 2 units above the floor
+  EXPECT_DOUBLE_EQ(st.multiDepthFraction(), 0);  // one flat occluder: one depth cluster
+  // Sibling: twice the light, twice the penumbra (the check above can fail).
+  const auto big = rt::prepareScene(context(), [&] {
+    rt::SceneSettings b = s;
+    b.scene = twoPlanesWithLight(2.0, "double");
+    return b;
+  }());
+  EXPECT_NEAR(planning::analyzeScene(*big).penumbraTexels.p50, 2 * expected, 0.02 * expected);
+  EXPECT_GT(std::abs(planning::analyzeScene(*big).penumbraTexels.p50 - expected), 0.5 * expected);
+}
+
+TEST(Analysis, ContactSceneHasContactAndSeveralDepths) {
+  rt::SceneSettings s;
+  s.scene = "contact";
+  s.screen = kScreen;
+  s.map = kMap;
+  s.traceReference = false;
+  const planning::SceneStats st = planning::analyzeScene(*rt::prepareScene(context(), s));
+  EXPECT_GT(st.contactFraction(), 0.001);
+  EXPECT_GT(st.multiDepthFraction(), 0.0);
+  EXPECT_GT(st.slopeDegrees.max, 60.0);  // box sides
+  const nlohmann::ordered_json j = planning::toJson(st);
+  EXPECT_EQ(j["contact"]["receivers"].get<uint64_t>(), st.contact);
+  EXPECT_NE(planning::formatSummary(st).find("% of penumbrae < 1.5 texels"), std::string::npos);
+}
+
+TEST(Plan, PointLikeLightHasNoBlockerSearchSatOrPenumbraKernel) {
+  const planning::PlanResult p = planFor({twoPlanesWithLight(0.002, "point")}, 0.2);
+  EXPECT_FALSE(p.chosen.blocker);
+  EXPECT_FALSE(p.chosen.sat);
+  EXPECT_FALSE(p.chosen.penumbraKernel);
+  EXPECT_LE(p.measured.worstRmse, 0.2);
+  EXPECT_NE(p.text.find("# blocker search dropped: 100.0 % of penumbrae < 1.5 texels"), std::string::npos) << p.text;
+  // Pruned down to the manifest: no representation passes, no SAT or moments image or binding.
+  const driver::Artifact a = compiled(p.text);
+  for (const Pass& pass : a.manifest.passes) EXPECT_EQ(pass.kind, "shade") << pass.name;
+  for (const ImageDesc& image : a.manifest.images) {
+    EXPECT_EQ(image.name.find("sat"), std::string::npos);
+    EXPECT_EQ(image.name.find("moments"), std::string::npos);
+  }
+  EXPECT_FALSE(anyFileHas(a, ".glsl", "shadowc_summedArea"));
+  EXPECT_FALSE(anyFileHas(a, ".spv", "shadowc_summedArea"));
+  // Sibling: everything on has those passes and that code, so the checks above can fail.
+  const driver::Artifact all = compiled(planning::describeCandidate(planning::everythingOn(), {}));
+  EXPECT_GT(all.manifest.passes.size(), 1u);
+  EXPECT_TRUE(anyFileHas(all, ".glsl", "shadowc_summedArea"));
+  EXPECT_TRUE(anyFileHas(all, ".spv", "shadowc_summedArea"));
+}
+
+TEST(Plan, RaisingTheLightSizeChangesThePlan) {
+  const planning::PlanResult small = planFor({twoPlanesWithLight(0.002, "small")}, 0.2);
+  const planning::PlanResult large = planFor({twoPlanesWithLight(1.0, "large")}, 0.05);
+  EXPECT_FALSE(small.chosen.blocker);
+  EXPECT_TRUE(large.chosen.blocker) << large.chosen.name;
+  EXPECT_NE(small.chosen.name, large.chosen.name);
+  EXPECT_NE(large.text.find("# blocker search kept: "), std::string::npos) << large.text;
+}
+
+// large_penumbra: one flat occluder close to a 4-unit light, nothing within the contact distance;
+// PCSS's taps cannot follow its penumbrae, so the plan is a VSSM variant (where a contact path
+// and a fallback could exist).
+TEST(Plan, NoContactNoLayersNoFallbackOnOneFlatOccluder) {
+  const planning::PlanResult p = planFor({"large_penumbra"}, 0.045);
+  EXPECT_FALSE(p.chosen.contact);
+  EXPECT_FALSE(p.chosen.fallback);
+  EXPECT_EQ(p.chosen.layers, 1);
+  EXPECT_LE(p.measured.worstRmse, 0.045);
+  EXPECT_NE(p.text.find("# contact path dropped: 0.00 % of receivers within 0.01 of a blocker"), std::string::npos)
+      << p.text;
+  EXPECT_NE(
+      p.text.find("# PCF fallback dropped: 0.0 % of penumbra kernel regions hold occluders at >= 2 distinct depths"),
+      std::string::npos)
+      << p.text;
+  EXPECT_NE(p.text.find("# layers dropped: 0.0 %"), std::string::npos) << p.text;
+  // One comment per feature, each naming its feature once.
+  size_t comments = 0;
+  for (size_t pos = p.text.find("\n    # "); pos != std::string::npos; pos = p.text.find("\n    # ", pos + 1))
+    ++comments;
+  EXPECT_EQ(comments, std::size(planning::kFeatures));
+  for (planning::Feature f : planning::kFeatures)
+    EXPECT_NE(p.text.find(std::string("# ") + planning::featureName(f) + " "), std::string::npos)
+        << planning::featureName(f);
+  // No contact code in the GLSL or SPIR-V; the sibling with the contact path has it, so the
+  // checks can fail.
+  const driver::Artifact planned = compiled(p.text);
+  ASSERT_TRUE(p.chosen.sat) << p.chosen.name;  // a VSSM plan, where a contact path could exist
+  std::string withContact = p.text;
+  const size_t at = withContact.find("    contact    none\n");
+  ASSERT_NE(at, std::string::npos) << p.text;
+  withContact.replace(at, 19, "    contact    pcf(size: 3x3, epsilon: 0.0123)\n");
+  const driver::Artifact contact = compiled(withContact);
+  EXPECT_FALSE(anyFileHas(planned, ".glsl", "SHADOWC_CONTACT_EPSILON"));
+  EXPECT_FALSE(anyFileHas(planned, ".glsl", "shadowc_pcfBilinearGrid"));
+  EXPECT_TRUE(anyFileHas(contact, ".glsl", "shadowc_pcfBilinearGrid"));
+  EXPECT_FALSE(spirvHoldsFloat(planned, 0.0123f));
+  EXPECT_TRUE(spirvHoldsFloat(contact, 0.0123f));
+  EXPECT_LT(planned.file("shade.spv")->size(), contact.file("shade.spv")->size());
+}
+
+TEST(Plan, SeveralScenesPlanOneFilterThatServesAll) {
+  const planning::PlanResult p = planFor({twoPlanesWithLight(0.002, "multi_small"), "two_planes"}, 0.05);
+  ASSERT_EQ(p.measured.rmse.size(), 2u);
+  for (double e : p.measured.rmse) EXPECT_LE(e, 0.05);
+  EXPECT_TRUE(p.chosen.blocker);  // the big light needs it even though the small one does not
+  EXPECT_NE(p.text.find("(worst scene: two_planes)"), std::string::npos) << p.text;
+}
+
+TEST(PlanCli, WritesACheckedDescription) {
+  const auto dir = test::freshTempDir("plan_cli");
+  const auto out = dir / "two planes.shadow";
+  const test::CliResult r = test::runShadowc(
+      "plan --scene two_planes --max-rmse 0.05 --screen 64 --map 256 --samples 8 --runs 1 --warmup 0 -o '" +
+      out.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const test::CliResult check = test::runShadowc("check '" + out.string() + "'");
+  EXPECT_EQ(check.code, 0) << check.err;
+  EXPECT_NE(test::readFile(out).find("filter two_planes {"), std::string::npos);
+}
+
+TEST(PlanCli, UnreachableBoundNamesTheBestReachable) {
+  const test::CliResult r = test::runShadowc(
+      "plan --scene two_planes --max-rmse 0.00001 --screen 64 --map 256 --samples 8 --runs 1 --warmup 0 -o "
+      "/tmp/x.shadow");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("--max-rmse 1e-05 is unreachable on two_planes: the best reachable bound is "),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("(variant "), std::string::npos) << r.err;
+}
+
+TEST(PlanCli, UnknownSceneIsOneMessage) {
+  const test::CliResult r = test::runShadowc("plan --scene no_such_scene --max-rmse 0.1 -o /tmp/x.shadow");
+  EXPECT_NE(r.code, 0);
+  EXPECT_NE(r.err.find("no_such_scene"), std::string::npos) << r.err;
+  EXPECT_EQ(r.out, "");
+}
+
+TEST(PlanCli, BudgetNoVariantMeets) {
+  const test::CliResult r = test::runShadowc(
+      "plan --scene two_planes --budget-ms 0.000001 --screen 64 --map 256 --samples 8 --runs 1 --warmup 0 -o "
+      "/tmp/x.shadow");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("no variant meets --budget-ms 1e-06 on two_planes: the fastest is "), std::string::npos)
+      << r.err;
+}
+
+TEST(AnalyzeCli, PrintsAndWritesJson) {
+  const auto json = test::freshTempDir("analyze_cli") / "stats.json";
+  const test::CliResult r =
+      test::runShadowc("analyze --scene two_planes --screen 64 --map 256 --json '" + json.string() + "'");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("penumbra width, texels"), std::string::npos);
+  const nlohmann::json j = nlohmann::json::parse(test::readFile(json));
+  EXPECT_EQ(j["scene"], "two_planes");
+  EXPECT_GT(j["penumbra_texels"]["p50"].get<double>(), 1.0);
+}
+
+}  // namespace
+}  // namespace shadowc

@@ -1,0 +1,246 @@
+// `shadowc sweep` end to end on a tiny sweep (32x32 screen, 256 map, 2x2 reference samples, so
+// the whole file runs in seconds): the frontier on the terminal equals the CSV's and the
+// report's (loaded in headless Chromium), no frontier row is dominated, invalid combinations are
+// counted under the checker's codes, an interrupted sweep re-runs nothing that finished, and
+// shards merged equal one process.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <sstream>
+
+#include "support/test_support.h"
+#include "sweep/pareto.h"
+#include "sweep/results_io.h"
+
+namespace shadowc {
+namespace {
+
+using nlohmann::json;
+
+// Four valid variants (hard, two PCF tap counts, PCSS) and one the checker rejects (E0416: a
+// point light cannot size a blocker search).
+std::string tinySweep(const std::string& shaders = R"(["specialized"])") {
+  const std::string f = (test::sourceDir() / "samples/filters").string();
+  return R"J({
+  "name": "tiny",
+  "filters": [
+    ")J" +
+         f + R"J(/hard_constant_bias.shadow",
+    {"name": "pcf", "file": ")J" +
+         f + R"J(/pcf_poisson16.shadow", "set": {"sampling": "poisson(${taps}, rotate: stable)"}},
+    {"file": ")J" +
+         f + R"J(/pcss_poisson.shadow"},
+    {"name": "point_pcss", "file": ")J" +
+         f + R"J(/pcss_poisson.shadow", "set": {"light": "point"}}
+  ],
+  "params": {"taps": [4, 16]},
+  "scenes": ["two_planes"],
+  "screen": 32, "map": 256, "reference_samples": 2, "runs": 2, "warmup": 1,
+  "shaders": )J" +
+         shaders + "\n}\n";
+}
+
+std::filesystem::path writeSweep(const std::string& tag, const std::string& text) {
+  const auto dir = test::freshTempDir(tag);
+  std::ofstream(dir / "sweep.json") << text;
+  return dir;
+}
+
+test::CliResult runSweep(const std::filesystem::path& dir, const std::string& out, const std::string& extra = "",
+                         const std::string& env = "") {
+  return test::runShadowc("sweep " + (dir / "sweep.json").string() + " -o " + (dir / out).string() + " " + extra, env);
+}
+
+json results(const std::filesystem::path& out) { return json::parse(test::readFile(out / "results.json")); }
+
+// CSV rows with frontier == 1 as (variant, total_ms, rmse, key), in file order.
+struct CsvRow {
+  std::string variant, key;
+  double ms = 0, rmse = 0;
+  bool frontier = false;
+};
+std::vector<CsvRow> csvRows(const std::filesystem::path& out) {
+  std::istringstream in(test::readFile(out / "results.csv"));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("case,scene,screen,map,variant,", 0), 0u) << line;
+  std::vector<CsvRow> rows;
+  while (std::getline(in, line)) {
+    // Split the simple leading fields (none of ours holds a quote before the spec column).
+    std::vector<std::string> f;
+    std::string cur;
+    bool quoted = false;
+    for (char c : line) {
+      if (c == '"') quoted = !quoted;
+      if (c == ',' && !quoted) {
+        f.push_back(cur);
+        cur.clear();
+      } else {
+        cur += c;
+      }
+    }
+    f.push_back(cur);
+    rows.push_back({f.at(4), f.at(19), std::stod(f.at(8)), std::stod(f.at(9)), f.at(16) == "1"});
+  }
+  return rows;
+}
+
+TEST(SweepCli, FrontierOnTerminalEqualsCsvAndReport) {
+  const auto dir = writeSweep("sweep-frontier", tinySweep());
+  const test::CliResult r = runSweep(dir, "out");
+  ASSERT_EQ(r.code, 0) << r.out << r.err;
+  // Terminal: the lines of the frontier block, "  <rank>  <variant>  <ms>  <rmse>  ...".
+  const std::regex line(R"(^\s+(\d+)\s+(\S+)\s+([0-9.]+)\s+([0-9.]+)\s)");
+  std::vector<std::tuple<std::string, double, double>> printed;
+  std::istringstream out(r.out);
+  for (std::string l; std::getline(out, l);) {
+    std::smatch m;
+    if (std::regex_search(l, m, line)) printed.emplace_back(m[2], std::stod(m[3]), std::stod(m[4]));
+  }
+  std::vector<CsvRow> csvFrontier;
+  for (const CsvRow& c : csvRows(dir / "out"))
+    if (c.frontier) csvFrontier.push_back(c);
+  std::stable_sort(csvFrontier.begin(), csvFrontier.end(), [](auto& a, auto& b) { return a.ms < b.ms; });
+  ASSERT_FALSE(printed.empty()) << r.out;
+  ASSERT_EQ(printed.size(), csvFrontier.size()) << r.out;
+  for (size_t i = 0; i < printed.size(); ++i) {
+    EXPECT_EQ(std::get<0>(printed[i]), csvFrontier[i].variant);
+    EXPECT_NEAR(std::get<1>(printed[i]), csvFrontier[i].ms, 1e-3);    // printed with 3 decimals
+    EXPECT_NEAR(std::get<2>(printed[i]), csvFrontier[i].rmse, 1e-5);  // printed with 5 decimals
+  }
+  // The report, rendered by headless Chromium: its frontier rows, in order, are the CSV's.
+  const auto profile = test::freshTempDir("sweep-chromium");
+  const std::string cmd = "chromium --headless --no-sandbox --disable-gpu --user-data-dir=" + profile.string() +
+                          " --dump-dom file://" + (dir / "out/report.html").string() + " 2>/dev/null";
+  FILE* p = ::popen(cmd.c_str(), "r");
+  ASSERT_NE(p, nullptr);
+  std::string dom;
+  char buf[4096];
+  for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) dom.append(buf, n);
+  ASSERT_EQ(::pclose(p), 0) << "chromium failed (scripts/install-deps.sh installs it)";
+  const std::regex tr(
+      R"re(<tr class="frontier-row" data-case="[^"]*" data-key="([0-9a-f]+)"><td>\d+</td><td>([^<]+)</td>)re");
+  std::vector<std::pair<std::string, std::string>> reported;
+  for (auto it = std::sregex_iterator(dom.begin(), dom.end(), tr); it != std::sregex_iterator(); ++it)
+    reported.emplace_back((*it)[1], (*it)[2]);
+  ASSERT_EQ(reported.size(), csvFrontier.size()) << dom.substr(0, 2000);
+  for (size_t i = 0; i < reported.size(); ++i) {
+    EXPECT_EQ(reported[i].first, csvFrontier[i].key);
+    EXPECT_EQ(reported[i].second, csvFrontier[i].variant);
+  }
+  EXPECT_NE(dom.find("plots/case0.svg"), std::string::npos);
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/plots/case0.svg"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "out/plots/case0.png"));
+}
+
+TEST(SweepCli, NoFrontierRowIsDominatedAndInvalidOnesAreCounted) {
+  const auto dir = writeSweep("sweep-dominated", tinySweep());
+  const test::CliResult r = runSweep(dir, "out");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const sweep::Results res = sweep::readResultsJson(dir / "out/results.json");
+  ASSERT_EQ(res.rows.size(), 4u);
+  for (const auto& row : res.rows)  // each row stores its filter normalized (printFilter)
+    EXPECT_EQ(row.normalizedText.rfind("filter ", 0), 0u) << row.normalizedText;
+  const auto front = sweep::frontiers(res.rows).at(0);
+  for (size_t i : front)
+    for (const auto& other : res.rows) EXPECT_FALSE(sweep::dominates(other, res.rows[i])) << res.rows[i].variant;
+  const json j = results(dir / "out");
+  for (size_t i = 0; i < res.rows.size(); ++i)  // results.json marks exactly those rows
+    EXPECT_EQ(j["rows"][i]["frontier"].get<bool>(), std::find(front.begin(), front.end(), i) != front.end());
+  ASSERT_EQ(res.skipped.size(), 1u);
+  EXPECT_EQ(res.skipped[0].variant, "point_pcss");
+  EXPECT_EQ(res.skipped[0].code, "E0416");
+  EXPECT_NE(r.err.find("skipped 1 variant(s): 1 x E0416"), std::string::npos) << r.err;
+}
+
+TEST(SweepCli, GenericShadersAreSkippedWithTheirOwnCode) {
+  const auto dir = writeSweep("sweep-generic", tinySweep(R"(["specialized", "generic"])"));
+  const test::CliResult r = runSweep(dir, "out");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const json j = results(dir / "out");
+  std::map<std::string, int> codes;
+  for (const auto& s : j["skipped"]) ++codes[s["code"].get<std::string>()];
+  EXPECT_EQ(codes["SW001"], 4);  // every valid variant's generic twin, until `compile --generic` exists
+  EXPECT_EQ(codes["E0416"], 2);  // the invalid variant, in both kinds: the checker speaks first
+  EXPECT_EQ(j["rows"].size(), 4u);
+}
+
+TEST(SweepCli, InterruptedSweepRerunsNothingFinished) {
+  const auto dir = writeSweep("sweep-resume", tinySweep());
+  const test::CliResult killed = runSweep(dir, "out", "", "SHADOWC_SWEEP_STOP_AFTER=2");
+  EXPECT_EQ(killed.code, 3) << killed.err;  // ended abruptly, like a kill: no results written
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/results.json"));
+  size_t cached = 0;
+  for (const auto& e : std::filesystem::directory_iterator(dir / "out/cache"))
+    cached += e.path().extension() == ".json";
+  EXPECT_EQ(cached, 2u);
+  const test::CliResult resumed = runSweep(dir, "out");
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const json j = results(dir / "out");
+  EXPECT_EQ(j["stats"]["cached"], 2);
+  EXPECT_EQ(j["stats"]["ran"], 2);  // only the two that had not finished
+  const test::CliResult again = runSweep(dir, "out");
+  ASSERT_EQ(again.code, 0);
+  EXPECT_EQ(results(dir / "out")["stats"]["ran"], 0);
+  // The sibling: a fresh folder runs all four, so the counts above are the cache's doing.
+  const test::CliResult fresh = runSweep(dir, "fresh");
+  ASSERT_EQ(fresh.code, 0);
+  EXPECT_EQ(results(dir / "fresh")["stats"]["ran"], 4);
+}
+
+// Everything of a row but its times (and the images' names, which carry the same key).
+std::string measured(const sweep::Row& r) {
+  json j = sweep::rowToJson(r);
+  j.erase("total_ms");
+  j.erase("passes");
+  return j.dump();
+}
+
+TEST(SweepCli, ShardsMergedEqualOneProcess) {
+  const auto dir = writeSweep("sweep-shards", tinySweep());
+  ASSERT_EQ(runSweep(dir, "one").code, 0);
+  for (int i = 0; i < 2; ++i)
+    ASSERT_EQ(runSweep(dir, "s" + std::to_string(i), "--shard " + std::to_string(i) + "/2").code, 0);
+  const test::CliResult m = test::runShadowc("sweep merge " + (dir / "s0").string() + " " + (dir / "s1").string() +
+                                             " -o " + (dir / "merged").string());
+  ASSERT_EQ(m.code, 0) << m.err;
+  const sweep::Results one = sweep::readResultsJson(dir / "one/results.json");
+  sweep::Results merged = sweep::readResultsJson(dir / "merged/results.json");
+  const sweep::Results s0 = sweep::readResultsJson(dir / "s0/results.json");
+  EXPECT_GT(s0.rows.size(), 0u);
+  EXPECT_LT(s0.rows.size(), one.rows.size());  // a real slice
+  ASSERT_EQ(merged.rows.size(), one.rows.size());
+  for (size_t i = 0; i < one.rows.size(); ++i) EXPECT_EQ(measured(merged.rows[i]), measured(one.rows[i]));
+  ASSERT_EQ(merged.skipped.size(), one.skipped.size());
+  // Same frontier, times aside: with the one-process times the merged rows give its frontier.
+  for (size_t i = 0; i < one.rows.size(); ++i) merged.rows[i].totalMs = one.rows[i].totalMs;
+  EXPECT_EQ(sweep::frontiers(merged.rows), sweep::frontiers(one.rows));
+  EXPECT_TRUE(std::filesystem::exists(dir / "merged/report.html"));
+}
+
+}  // namespace
+}  // namespace shadowc
+
+namespace shadowc {
+namespace {
+
+// Bad input: one located message, a non-zero exit, nothing run. The sibling is every test above.
+TEST(SweepCli, BadDescriptionIsOneLocatedError) {
+  const auto dir = writeSweep("sweep-bad", R"({"filters": ["no_such.shadow"], "scenes": ["two_planes"]})");
+  const test::CliResult r = runSweep(dir, "out");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("sweep.json: error: filters[0]: cannot read"), std::string::npos) << r.err;
+  size_t errors = 0;
+  for (size_t at = 0; (at = r.err.find("error:", at)) != std::string::npos; ++at) ++errors;
+  EXPECT_EQ(errors, 1u) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "out/results.json"));
+  const test::CliResult shard = runSweep(writeSweep("sweep-bad-shard", tinySweep()), "out", "--shard 2/2");
+  EXPECT_EQ(shard.code, 1);
+  EXPECT_NE(shard.err.find("--shard '2/2': need 0 <= I < N"), std::string::npos) << shard.err;
+}
+
+}  // namespace
+}  // namespace shadowc
