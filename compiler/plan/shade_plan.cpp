@@ -157,11 +157,11 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
           out.tables.push_back(UnrolledQuadtree{s.blocker.quadtreeHeight, "shadowc_qtUnrolledBlocker",
                                                 "shadowc_qtVisit", "shadowc_qtLeaf"});
       } else {
-        // One table of the larger height serves both walks (next() does not depend on depth).
+        // The walk computes Next/Child from the node (vssm.glsl shadowc_qtNextNode): no table in
+        // the shader, since lavapipe turns a dynamically indexed const table into an if-ladder
+        // per read (docs/performance.md, "Pipeline creation"). Bounded by the larger tree's size.
         const int h = std::max(kernelQt ? s.kernel.quadtreeHeight : 0, blockerQt ? s.blocker.quadtreeHeight : 0);
-        QuadtreeTables t = buildQuadtreeTables(h);
-        defInt("SHADOWC_QT_NODES", static_cast<long long>(t.nodes.size()));
-        out.tables.push_back(QuadtreeTableSet{"shadowc_qt", std::move(t)});
+        defInt("SHADOWC_QT_NODES", quadtreeNodeCount(h));
       }
     }
   }

@@ -56,6 +56,13 @@ struct Facts {
   bool msmFp32Sat() const {
     return msm() && (s.storage.sat == SatKind::Fp32Centered || s.storage.sat == SatKind::Fp32Naive);
   }
+  // The tallest quadtree the unrolled traversal copies into the shader (kernel or blocker), or 0.
+  int unrolledHeight() const {
+    if (s.kernel.traversal != QuadtreeTraversal::Unrolled) return 0;
+    const int k = s.kernel.subdivision == Subdivision::Quadtree ? s.kernel.quadtreeHeight : 0;
+    const int b = vssm() && s.blocker.subdivision == Subdivision::Quadtree ? s.blocker.quadtreeHeight : 0;
+    return std::max(k, b);
+  }
 };
 
 // The token a rule's caret points at. Settings point at their value (the keyword when it has
@@ -186,6 +193,10 @@ const Rule kRules[] = {
        const MsmSatPrecision p = msmFp32SatPrecision(f.s);
        push(a, f.s.mapSize, p.boxTexels, p.meanError, f.s.moments.momentBias);
      }},
+    // ---- an unrolled quadtree is one copy of the sub-kernel test per node (docs/performance.md) --
+    {DiagId::unrolledQuadtreeTooTall, Caret::Kernel, [](const Facts& f) { return f.unrolledHeight() >= 4; },
+     [](const Facts& f, Args& a) { push(a, f.unrolledHeight(), ((1 << (2 * (f.unrolledHeight() + 1))) - 1) / 3); }},
+    {DiagId::unrolledQuadtreeSlow, Caret::Kernel, [](const Facts& f) { return f.unrolledHeight() == 3; }},
     // ---- exponential warps: exp(c) must stay representable (precision.h) -----------------------
     {DiagId::exponentOverflow, Caret::Exponent,
      [](const Facts& f) { return f.exponential && f.r.exponent && f.s.moments.positiveExponent > f.limit.maxExponent; },

@@ -123,21 +123,35 @@ void shadowc_uniformWalk(int den) {
 }
 
 #if defined(SHADOWC_QT_NODES)
-// Stackless table walk of Algorithm 2 ([Bun05], Fig. 5): Child on "descend", else Next. The
-// tables may be taller than `height`; nodes at that level are treated as leaves (their Next is
-// the same in the shorter tree). Bounded by the node count even for a broken table.
+// Next (Fig. 5) of a node of the full quadtree in pre-order, computed from the node itself, so
+// the walk reads no table: climb while the node is its parent's last child (Z order (0,0) (1,0)
+// (0,1) (1,1), as quadtree_tables.cpp builds them), then step to the next sibling; the root's
+// Next is Null (z = 0). tests/emit/quadtree_tables_test.cpp checks it against the Next table.
+// A dynamically indexed const table becomes an if-ladder per read in lavapipe, and the JIT time
+// of that grows much faster than the node count (docs/performance.md, "Pipeline creation").
+ivec3 shadowc_qtNextNode(ivec3 n) {
+  // Levels to climb: the trailing ones of ix & iy (a last child has both low bits set), at
+  // most the node's level (findLSB(z) for z = 2^level); no loop.
+  int up = min(findLSB(~(n.x & n.y)), findLSB(n.z));
+  n = ivec3(n.xy >> up, n.z >> up);
+  if (n.z <= 1) return ivec3(0);
+  int c = (n.x & 1) + 2 * (n.y & 1) + 1;
+  return ivec3((n.x & ~1) | (c & 1), (n.y & ~1) | (c >> 1), n.z);
+}
+
+// Stackless walk of Algorithm 2 ([Bun05], Fig. 5): Child on "descend", else Next. Nodes at
+// level `height` are leaves. Bounded by the node count, as the table walk was.
 void shadowc_qtWalk(int height) {
-  int node = 0;
-  for (int step = 0; step < SHADOWC_QT_NODES && node >= 0; ++step) {
-    ivec3 n = shadowc_qtNode[node];
+  ivec3 n = ivec3(0, 0, 1);
+  for (int step = 0; step < SHADOWC_QT_NODES && n.z > 0; ++step) {
     if (shadowc_qtClassify(n) == 1) {
-      if (n.z < (1 << height) && shadowc_qtChild[node] >= 0) {
-        node = shadowc_qtChild[node];
+      if (n.z < (1 << height)) {
+        n = ivec3(2 * n.xy, 2 * n.z);  // Child: the first of the four
         continue;
       }
       shadowc_qtResolveLeaf(n);
     }
-    node = shadowc_qtNext[node];
+    n = shadowc_qtNextNode(n);
   }
 }
 #endif

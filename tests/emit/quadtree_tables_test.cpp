@@ -6,6 +6,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <bit>
 #include <cstdint>
 #include <random>
 #include <regex>
@@ -226,6 +228,36 @@ TEST(QuadtreeTables, GlslTablesListEveryNode) {
             std::string::npos);
   // Deterministic bytes.
   EXPECT_EQ(glsl, emitQuadtreeTablesGlsl(buildQuadtreeTables(2), "qt"));
+}
+
+// templates/lookup/vssm.glsl computes Next from the node (shadowc_qtNextNode) instead of reading
+// the table; this is that function line by line, checked against the Next table of every node.
+TEST(QuadtreeTables, ComputedNextEqualsTheNextTable) {
+  struct N {
+    int x, y, z;  // ix, iy, 2^level; z = 0 is Null
+  };
+  auto nextNode = [](N n) {
+    const int up =
+        std::min(std::countr_one(static_cast<unsigned>(n.x & n.y)), std::countr_zero(static_cast<unsigned>(n.z)));
+    n = {n.x >> up, n.y >> up, n.z >> up};
+    if (n.z <= 1) return N{0, 0, 0};
+    const int c = (n.x & 1) + 2 * (n.y & 1) + 1;
+    return N{(n.x & ~1) | (c & 1), (n.y & ~1) | (c >> 1), n.z};
+  };
+  for (int h = 1; h <= 5; ++h) {
+    const QuadtreeTables t = buildQuadtreeTables(h);
+    for (size_t i = 0; i < t.nodes.size(); ++i) {
+      const QuadtreeNode& q = t.nodes[i];
+      const N got = nextNode({q.ix, q.iy, 1 << q.level});
+      if (q.next < 0) {
+        EXPECT_EQ(got.z, 0) << "height " << h << " node " << i;
+        continue;
+      }
+      const QuadtreeNode& want = t.nodes[static_cast<size_t>(q.next)];
+      EXPECT_EQ(std::make_tuple(got.x, got.y, got.z), std::make_tuple(want.ix, want.iy, 1 << want.level))
+          << "height " << h << " node " << i;
+    }
+  }
 }
 
 }  // namespace

@@ -92,10 +92,8 @@ const std::vector<std::string> kVssmChecks = {
     "CHECK: value SHADOWC_FALLBACK_PCF bool 1",
     "CHECK: value SHADOWC_CONTACT_EPSILON real 0.01",
     "CHECK: value SHADOWC_QT_NODES int 85",  // (4^4 - 1) / 3
-    "CHECK-NEXT: table shadowc_qt quadtree height 3 nodes 85",
-    "CHECK-NEXT: node (0 0 1) (0 0 2) (0 0 4) (0 0 8) (1 0 8)",
-    "CHECK-NEXT: child 1 2 3 -1 -1 -1 -1 8",
-    "CHECK-NEXT: next -1 22 7 4 5 6 7 12",  // Algorithm 2's Next: sibling, else the parent's next
+    // The table walk computes Next/Child from the node (vssm.glsl): no table in the plan.
+    "CHECK-NOT: table shadowc_qt",
 };
 
 TEST(PrintPlan, VssmSampleMatchesItsChecks) {

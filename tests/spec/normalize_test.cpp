@@ -101,6 +101,20 @@ TEST(Combinations, Int32SatBoxLimit) {
   EXPECT_EQ(codes(base + "kernel uniform(4, max: 256)"), Codes{"E0412"});
 }
 
+TEST(Combinations, UnrolledQuadtreeHeightLimit) {
+  // Measured in docs/performance.md ("Pipeline creation"): the unrolled traversal is one copy of
+  // the sub-kernel test per node; the table walk of the same height is a loop.
+  const std::string base = "moments linear\nstorage sat(int32)\nblocker moments\n";
+  EXPECT_EQ(codes(base + "kernel quadtree(height: 2, traversal: unrolled)"), Codes{});
+  EXPECT_EQ(codes(base + "kernel quadtree(height: 3, traversal: unrolled)"), Codes{"W0510"});
+  EXPECT_EQ(codes(base + "kernel quadtree(height: 4, traversal: unrolled)"), Codes{"E0419"});
+  EXPECT_EQ(codes(base + "kernel quadtree(height: 5, traversal: table)"), Codes{});
+  // The blocker walk is unrolled with the kernel's traversal too.
+  EXPECT_EQ(codes("moments linear\nstorage sat(int32)\nblocker moments(quadtree(height: 5))\n"
+                  "kernel quadtree(height: 1, traversal: unrolled)"),
+            Codes{"E0419"});
+}
+
 TEST(Combinations, WerrorTurnsWarningsIntoErrors) {
   const std::string body = "moments linear\nstorage sat(fp32)";
   LoadOptions o;

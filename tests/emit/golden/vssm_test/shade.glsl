@@ -1,9 +1,5 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#line 51
-const ivec3 shadowc_qtNode[85]= ivec3[](ivec3(0, 0, 1), ivec3(0, 0, 2), ivec3(0, 0, 4), ivec3(0, 0, 8), ivec3(1, 0, 8), ivec3(0, 1, 8), ivec3(1, 1, 8), ivec3(1, 0, 4), ivec3(2, 0, 8), ivec3(3, 0, 8), ivec3(2, 1, 8), ivec3(3, 1, 8), ivec3(0, 1, 4), ivec3(0, 2, 8), ivec3(1, 2, 8), ivec3(0, 3, 8), ivec3(1, 3, 8), ivec3(1, 1, 4), ivec3(2, 2, 8), ivec3(3, 2, 8), ivec3(2, 3, 8), ivec3(3, 3, 8), ivec3(1, 0, 2), ivec3(2, 0, 4), ivec3(4, 0, 8), ivec3(5, 0, 8), ivec3(4, 1, 8), ivec3(5, 1, 8), ivec3(3, 0, 4), ivec3(6, 0, 8), ivec3(7, 0, 8), ivec3(6, 1, 8), ivec3(7, 1, 8), ivec3(2, 1, 4), ivec3(4, 2, 8), ivec3(5, 2, 8), ivec3(4, 3, 8), ivec3(5, 3, 8), ivec3(3, 1, 4), ivec3(6, 2, 8), ivec3(7, 2, 8), ivec3(6, 3, 8), ivec3(7, 3, 8), ivec3(0, 1, 2), ivec3(0, 2, 4), ivec3(0, 4, 8), ivec3(1, 4, 8), ivec3(0, 5, 8), ivec3(1, 5, 8), ivec3(1, 2, 4), ivec3(2, 4, 8), ivec3(3, 4, 8), ivec3(2, 5, 8), ivec3(3, 5, 8), ivec3(0, 3, 4), ivec3(0, 6, 8), ivec3(1, 6, 8), ivec3(0, 7, 8), ivec3(1, 7, 8), ivec3(1, 3, 4), ivec3(2, 6, 8), ivec3(3, 6, 8), ivec3(2, 7, 8), ivec3(3, 7, 8), ivec3(1, 1, 2), ivec3(2, 2, 4), ivec3(4, 4, 8), ivec3(5, 4, 8), ivec3(4, 5, 8), ivec3(5, 5, 8), ivec3(3, 2, 4), ivec3(6, 4, 8), ivec3(7, 4, 8), ivec3(6, 5, 8), ivec3(7, 5, 8), ivec3(2, 3, 4), ivec3(4, 6, 8), ivec3(5, 6, 8), ivec3(4, 7, 8), ivec3(5, 7, 8), ivec3(3, 3, 4), ivec3(6, 6, 8), ivec3(7, 6, 8), ivec3(6, 7, 8), ivec3(7, 7, 8));
-const int shadowc_qtChild[85]= int[](1, 2, 3, - 1, - 1, - 1, - 1, 8, - 1, - 1, - 1, - 1, 13, - 1, - 1, - 1, - 1, 18, - 1, - 1, - 1, - 1, 23, 24, - 1, - 1, - 1, - 1, 29, - 1, - 1, - 1, - 1, 34, - 1, - 1, - 1, - 1, 39, - 1, - 1, - 1, - 1, 44, 45, - 1, - 1, - 1, - 1, 50, - 1, - 1, - 1, - 1, 55, - 1, - 1, - 1, - 1, 60, - 1, - 1, - 1, - 1, 65, 66, - 1, - 1, - 1, - 1, 71, - 1, - 1, - 1, - 1, 76, - 1, - 1, - 1, - 1, 81, - 1, - 1, - 1, - 1);
-const int shadowc_qtNext[85]= int[](- 1, 22, 7, 4, 5, 6, 7, 12, 9, 10, 11, 12, 17, 14, 15, 16, 17, 22, 19, 20, 21, 22, 43, 28, 25, 26, 27, 28, 33, 30, 31, 32, 33, 38, 35, 36, 37, 38, 43, 40, 41, 42, 43, 64, 49, 46, 47, 48, 49, 54, 51, 52, 53, 54, 59, 56, 57, 58, 59, 64, 61, 62, 63, 64, - 1, 70, 67, 68, 69, 70, 75, 72, 73, 74, 75, 80, 77, 78, 79, 80, - 1, 82, 83, 84, - 1);
 #line 1 "frame.glsl"
 #line 20
 struct shadowc_Frame {
@@ -328,27 +324,35 @@ void shadowc_uniformWalk(int den){
   for(int j = 0;j < den;++ j)
     for(int i = 0;i < den;++ i)shadowc_qtLeaf(ivec3(i, j, den));
 }
-#line 129
+#line 132
+ivec3 shadowc_qtNextNode(ivec3 n){
+#line 135
+  int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
+  n = ivec3(n . xy >> up, n . z >> up);
+  if(n . z <= 1)return ivec3(0);
+  int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
+  return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
+}
+#line 144
 void shadowc_qtWalk(int height){
-  int node = 0;
-  for(int step = 0;step < 85 && node >= 0;++ step){
-    ivec3 n = shadowc_qtNode[node];
+  ivec3 n = ivec3(0, 0, 1);
+  for(int step = 0;step < 85 && n . z > 0;++ step){
     if(shadowc_qtClassify(n)== 1){
-      if(n . z <(1 << height)&& shadowc_qtChild[node]>= 0){
-        node = shadowc_qtChild[node];
+      if(n . z <(1 << height)){
+        n = ivec3(2 * n . xy, 2 * n . z);
         continue;
       }
       shadowc_qtResolveLeaf(n);
     }
-    node = shadowc_qtNext[node];
+    n = shadowc_qtNextNode(n);
   }
 }
-#line 146
+#line 160
 float shadowc_vssmBlocker(ivec4 searchRect, float d){
   shadowc_vssmBegin(searchRect, d);
-#line 155
+#line 169
   shadowc_uniformWalk(5);
-#line 160
+#line 174
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -365,12 +369,12 @@ float shadowc_vssmBlocker(ivec4 searchRect, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 178
+#line 192
 float shadowc_vssmVisibility(ivec4 rect, float d){
   shadowc_vssmBegin(rect, d);
-#line 184
+#line 198
   shadowc_qtWalk(3);
-#line 191
+#line 205
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -384,11 +388,11 @@ float shadowc_vssmVisibility(ivec4 rect, float d){
 float shadowc_vssm(shadowc_Receiver r){
   ivec4 searchRect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchRect, r . d);
-#line 222
+#line 236
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 228
+#line 242
   return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
 }
 #line 47 "lookup/shadowc_lookup.glsl"
