@@ -176,7 +176,7 @@ int shadowc_layerOf(float d){
     if(d >= shadowc_split(i))j = i;
   return j;
 }
-#line 43 "lookup/shadowc_lookup.glsl"
+#line 45 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/moments_filter.glsl"
 #line 27
 vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
@@ -186,7 +186,7 @@ vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
 }
 #line 36
 float shadowc_estimate(vec4 m, float d, float minVariance){
-#line 47
+#line 49
   return shadowc_powerCdf(m . xyz, d);
 
 }
@@ -195,22 +195,22 @@ float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 57
+#line 59
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 71
+#line 73
   return v;
 }
-#line 76
+#line 78
 float shadowc_momentsTechnique(shadowc_Receiver r){
-#line 86
+#line 88
   float w = 3.0;
 
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
-#line 44 "lookup/shadowc_lookup.glsl"
-#line 52
+#line 46 "lookup/shadowc_lookup.glsl"
+#line 54
 bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
@@ -224,13 +224,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 83
+#line 85
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 94
+#line 96
   float v = shadowc_momentsTechnique(r);
-#line 104
+#line 106
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

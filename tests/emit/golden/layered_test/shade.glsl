@@ -180,7 +180,7 @@ int shadowc_layerOf(float d){
     if(d >= shadowc_split(i))j = i;
   return j;
 }
-#line 43 "lookup/shadowc_lookup.glsl"
+#line 45 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/moments_filter.glsl"
 #line 27
 vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
@@ -192,18 +192,18 @@ vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
 float shadowc_estimate(vec4 m, float d, float minVariance){
 #line 45
   return shadowc_evsm(m, d, minVariance);
-#line 49
+#line 51
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 57
+#line 59
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 62
+#line 64
   const float delta = 0.02;
   if(j + 1 < 3 && d > shadowc_split(j + 1)- delta){
     float t = clamp((d -(shadowc_split(j + 1)- delta))/(2.0 * delta), 0.0, 1.0);
@@ -215,15 +215,15 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
 
   return v;
 }
-#line 76
+#line 78
 float shadowc_momentsTechnique(shadowc_Receiver r){
-#line 86
+#line 88
   float w = 3.0;
 
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
-#line 44 "lookup/shadowc_lookup.glsl"
-#line 52
+#line 46 "lookup/shadowc_lookup.glsl"
+#line 54
 bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
@@ -237,13 +237,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 83
+#line 85
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 94
+#line 96
   float v = shadowc_momentsTechnique(r);
-#line 104
+#line 106
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -1,50 +1,61 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #line 1 "frame.glsl"
-#line 19
-layout(set = 0, binding = 0, std140)uniform ShadowcFrame {
+#line 20
+struct shadowc_Frame {
+  mat4 lightView;
+  vec4 lightParams;
+};
+shadowc_Frame shadowc_frame();
+
+#line 1 "frame_block.glsl"
+#line 15
+layout(set = 0, binding = 0, std140)uniform shadowc_FrameBlock {
   mat4 lightView;
   vec4 lightParams;
   vec4 lightShape;
   vec4 mapInfo;
   vec4 screenInfo;
-} frame;
-#line 28
+} shadowc_frameBlock;
+
+shadowc_Frame shadowc_frame(){ return shadowc_Frame(shadowc_frameBlock . lightView, shadowc_frameBlock . lightParams);}
+#line 27 "frame.glsl"
+#line 30
 vec4 shadowc_lightSpace(vec3 worldPos){
-  vec3 p =(frame . lightView * vec4(worldPos, 1.0)). xyz;
-  vec2 uv = 0.5 + 0.5 * p . xy /(p . z * frame . lightParams . x);
-  float d =(p . z - frame . lightParams . y)/(frame . lightParams . z - frame . lightParams . y);
+  vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
+  vec2 uv = 0.5 + 0.5 * p . xy /(p . z * shadowc_frame(). lightParams . x);
+  float d =(p . z - shadowc_frame(). lightParams . y)/(shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y);
   return vec4(uv, d, p . z);
 }
 
-float shadowc_viewZ(float d){ return frame . lightParams . y + d *(frame . lightParams . z - frame . lightParams . y);}
-#line 38
+float shadowc_viewZ(float d){ return shadowc_frame(). lightParams . y + d *(shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y);}
+#line 40
 float shadowc_lightSizeUV(float lightWidth){
-  return lightWidth /(2.0 * frame . lightParams . y * frame . lightParams . x);
+  return lightWidth /(2.0 * shadowc_frame(). lightParams . y * shadowc_frame(). lightParams . x);
 }
-#line 44
+#line 46
 float shadowc_searchWidthUV(float lightWidth, float zr){
-  return shadowc_lightSizeUV(lightWidth)*(zr - frame . lightParams . y)/ zr;
+  return shadowc_lightSizeUV(lightWidth)*(zr - shadowc_frame(). lightParams . y)/ zr;
 }
-#line 50
+#line 52
 float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb){
-  return shadowc_lightSizeUV(lightWidth)* frame . lightParams . y *(zr - zb)/(zb * zr);
+  return shadowc_lightSizeUV(lightWidth)* shadowc_frame(). lightParams . y *(zr - zb)/(zb * zr);
 }
 #line 11 "templates/shade.comp"
 #line 1 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/defaults.glsl"
-#line 12 "lookup/shadowc_lookup.glsl"
-#line 1 "frame.glsl"
-#line 13 "lookup/shadowc_lookup.glsl"
-#line 1 "lookup/resources.glsl"
-#line 10
-layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
-#line 14
-layout(set = 0, binding = 5)uniform sampler2DArray shadowc_moments;
 #line 14 "lookup/shadowc_lookup.glsl"
+#line 1 "frame.glsl"
+#line 15 "lookup/shadowc_lookup.glsl"
+#line 1 "lookup/resources.glsl"
+#line 11
+layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
+#line 15
+layout(set = 0, binding = 5)uniform sampler2DArray shadowc_moments;
+#line 16 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/kernel.glsl"
 #line 8
-struct ShadowcReceiver {
+struct shadowc_Receiver {
   vec2 uv;
   vec2 texel;
   float d;
@@ -55,7 +66,7 @@ struct ShadowcReceiver {
 
 float shadowc_lightWidth(){
 #line 21
-  return max(frame . lightParams . w, 0.0);
+  return max(shadowc_frame(). lightParams . w, 0.0);
 
 }
 
@@ -75,23 +86,23 @@ ivec4 shadowc_kernelRect(vec2 c, float w){
   return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
 }
 #line 46
-float shadowc_searchTexels(ShadowcReceiver r){
+float shadowc_searchTexels(shadowc_Receiver r){
   return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
 }
 #line 52
-float shadowc_penumbraTexels(ShadowcReceiver r, float zBlocker){
-  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), frame . lightParams . y);
+float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
+  float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
 #line 58
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
-#line 15 "lookup/shadowc_lookup.glsl"
+#line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
 #line 12
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
   vec3 p = worldPos;
 #line 19
-  vec3 pl =(frame . lightView * vec4(p, 1.0)). xyz;
+  vec3 pl =(shadowc_frame(). lightView * vec4(p, 1.0)). xyz;
   return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
 }
 
@@ -100,7 +111,7 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
   return 0.001;
 
 }
-#line 16 "lookup/shadowc_lookup.glsl"
+#line 18 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/chebyshev.glsl"
 #line 14
 float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance){
@@ -116,7 +127,7 @@ float shadowc_reduceBleeding(float p){
   return p;
 
 }
-#line 30 "lookup/shadowc_lookup.glsl"
+#line 32 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/msm.glsl"
 #line 1 "passes/msm_moments.glsl"
 #line 21
@@ -186,7 +197,7 @@ float shadowc_msm(vec4 stored, float zf){
   float v = 1.0 - shadowc_msmShadow(shadowc_msmDecode(stored), zf);
   return shadowc_unit(v);
 }
-#line 38 "lookup/shadowc_lookup.glsl"
+#line 40 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/layered.glsl"
 #line 14
 float shadowc_split(int i){
@@ -219,7 +230,7 @@ int shadowc_layerOf(float d){
     if(d >= shadowc_split(i))j = i;
   return j;
 }
-#line 43 "lookup/shadowc_lookup.glsl"
+#line 45 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/moments_filter.glsl"
 #line 27
 vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
@@ -246,15 +257,15 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   return v;
 }
 #line 78
-float shadowc_momentsTechnique(ShadowcReceiver r){
+float shadowc_momentsTechnique(shadowc_Receiver r){
 #line 88
   float w = 1.0;
 
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
-#line 44 "lookup/shadowc_lookup.glsl"
-#line 52
-bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
+#line 46 "lookup/shadowc_lookup.glsl"
+#line 54
+bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
   r . lightWidth = shadowc_lightWidth();
@@ -263,17 +274,17 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out ShadowcReceiver r){
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
-  r . zr = max(ls . w, frame . lightParams . y);
+  r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 83
+#line 85
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
-  ShadowcReceiver r;
+  shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 94
+#line 96
   float v = shadowc_momentsTechnique(r);
-#line 104
+#line 106
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -186,7 +186,7 @@ float shadowc_pcss(shadowc_Receiver r){
   return shadowc_pcf(r, shadowc_penumbraTexels(r, zb));
 }
 #line 26 "lookup/shadowc_lookup.glsl"
-#line 52
+#line 54
 bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
@@ -200,13 +200,13 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 83
+#line 85
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 96
+#line 98
   float v = shadowc_pcss(r);
-#line 104
+#line 106
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

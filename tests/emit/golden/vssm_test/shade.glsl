@@ -176,7 +176,7 @@ vec4 shadowc_summedMean(ivec4 rect, int layer){
   return vec4(sum)/(65536.0 * area);
 #line 58
 }
-#line 41 "lookup/shadowc_lookup.glsl"
+#line 43 "lookup/shadowc_lookup.glsl"
 
 #line 1 "lookup/layered.glsl"
 #line 14
@@ -210,7 +210,7 @@ int shadowc_layerOf(float d){
     if(d >= shadowc_split(i))j = i;
   return j;
 }
-#line 43 "lookup/shadowc_lookup.glsl"
+#line 45 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/moments_filter.glsl"
 #line 14
 vec4 shadowc_rectMoments(ivec4 rect, int layer){
@@ -230,28 +230,28 @@ float shadowc_estimate(vec4 m, float d, float minVariance){
   minVariance = max(minVariance, shadowc_satVarianceFloor);
 
   return shadowc_reduceBleeding(shadowc_chebyshev(m . x, m . y, d, minVariance));
-#line 49
+#line 51
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 57
+#line 59
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 71
+#line 73
   return v;
 }
-#line 76
+#line 78
 float shadowc_momentsTechnique(shadowc_Receiver r){
-#line 83
+#line 85
   float w = shadowc_searchTexels(r);
-#line 88
+#line 90
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
-#line 44 "lookup/shadowc_lookup.glsl"
+#line 46 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/vssm.glsl"
 #line 29
 ivec4 shadowc_vRoot;
@@ -395,8 +395,8 @@ float shadowc_vssm(shadowc_Receiver r){
 #line 242
   return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
 }
-#line 47 "lookup/shadowc_lookup.glsl"
-#line 52
+#line 49 "lookup/shadowc_lookup.glsl"
+#line 54
 bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
@@ -410,25 +410,25 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 71
+#line 73
 ivec4 shadowc_influenceRect(shadowc_Receiver r){
 
   ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
-#line 77
+#line 79
   ivec2 last = shadowc_mapSize()- 1;
   const int grow = 1 + 0;
   return ivec4(max(rect . xy - grow, ivec2(0)), min(rect . zw + grow, last));
 }
-#line 83
+#line 85
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 88
+#line 90
   float early = shadowc_earlyOut(shadowc_influenceRect(r), r . d);
   if(early >= 0.0)return early;
-#line 92
+#line 94
   float v = shadowc_vssm(r);
-#line 104
+#line 106
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"
