@@ -43,7 +43,7 @@ Pass pass(const std::string& name, std::vector<Binding> bindings, DispatchMode m
 }
 
 // Pass 1 doubles `input` into `doubled` (storage read -> storage write). Pass 2 reads `doubled`
-// through a sampler and adds frame.mapInfo.x and a push constant: checks the barrier between
+// through a sampler and adds the frame block's mapInfo.x and a push constant: checks the barrier between
 // passes, the UBO and push constants at once.
 constexpr const char* kDouble = R"(#version 460
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -65,7 +65,7 @@ layout(push_constant) uniform Push { float offset; uint scale; } pc;
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(result)))) return;
-  imageStore(result, p, vec4(float(pc.scale) * texelFetch(doubled, p, 0).r + frame.mapInfo.x + pc.offset));
+  imageStore(result, p, vec4(float(pc.scale) * texelFetch(doubled, p, 0).r + shadowc_frameBlock.mapInfo.x + pc.offset));
 }
 )";
 

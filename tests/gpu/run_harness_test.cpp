@@ -18,7 +18,7 @@ using RunHarnessTest = VulkanTest;
 
 constexpr uint32_t kSide = 19;  // map = screen side; not a multiple of the local size
 
-// visibility = 1 - depth + frame.mapInfo.y (the frame reaches the pass too).
+// visibility = 1 - depth + shadowc_frameBlock.mapInfo.y (the frame reaches the pass too).
 constexpr const char* kShade = R"(#version 460
 #extension GL_GOOGLE_include_directive : require
 #include "frame.glsl"
@@ -28,7 +28,7 @@ layout(set = 0, binding = 2, r32f) writeonly uniform image2D visibility;
 void main() {
   ivec2 p = ivec2(gl_GlobalInvocationID.xy);
   if (any(greaterThanEqual(p, imageSize(visibility)))) return;
-  imageStore(visibility, p, vec4(1.0 - imageLoad(depth, p).r + frame.mapInfo.y));
+  imageStore(visibility, p, vec4(1.0 - imageLoad(depth, p).r + shadowc_frameBlock.mapInfo.y));
 }
 )";
 
