@@ -224,6 +224,8 @@ SweepSpec parseSweepSpec(const std::string& jsonText, const std::string& label, 
     std::string what = e.what();
     if (const size_t p = what.find("parse error"); p != std::string::npos) what = what.substr(p);
     throw SweepSpecError(fmt::format("{}:{}:{}: error: malformed JSON: {}", label, line, col, what));
+  } catch (const ordered_json::exception& e) {  // well-formed but refused, e.g. a number beyond double
+    throw SweepSpecError(fmt::format("{}: error: malformed JSON: {}", label, e.what()));
   }
   r.checkKeys(
       j, "",

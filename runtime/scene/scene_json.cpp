@@ -258,6 +258,10 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceLabel, co
       detail = detail.substr(at + 2);
     }
     throw SceneError(fmt::format("{}:{}:{}: error: malformed JSON: {}", sourceLabel, line, col, detail));
+  } catch (const json::exception& e) {
+    // Well-formed text nlohmann still refuses, e.g. a number beyond double's range (out_of_range
+    // 406; found by fuzz_scene, now a seed in tests/fuzz/corpus/scene/).
+    throw SceneError(fmt::format("{}: error: malformed JSON: {}", sourceLabel, e.what()));
   }
   Reader r(sourceLabel);
   if (!j.is_object()) r.fail("(top level)", fmt::format("expected an object, got {}", typeName(j)));
