@@ -58,7 +58,14 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   defBool("SHADOWC_HAS_SPLITS_TEXTURE", splitsTexture);
 
   // ---- light ------------------------------------------------------------------------------
-  if (!s.light.sizeFromScene) defReal("SHADOWC_LIGHT_WIDTH", s.light.shape == LightShape::Point ? 0.0 : s.light.size);
+  // A sun's "width" is the slope of its orthographic penumbra, 2 tan(angle / 2) (frame.glsl under
+  // SHADOWC_LIGHT_ORTHO); the flag is defined only for a sun, so spot lights emit what they did.
+  const bool sun = s.light.type == LightType::Sun;
+  if (sun) defBool("SHADOWC_LIGHT_ORTHO", true);
+  if (!s.light.sizeFromScene)
+    defReal("SHADOWC_LIGHT_WIDTH", sun                                  ? sunPenumbraSlope(s.light.angleDegrees)
+                                   : s.light.shape == LightShape::Point ? 0.0
+                                                                        : s.light.size);
 
   // ---- bias (pcss-blog.txt slope-scaled form) ---------------------------------------------
   defCode("SHADOWC_BIAS_KIND", biasKindCode(s.bias.kind));

@@ -2,6 +2,7 @@
 // declaration order; enum values use the DSL's spelling (docs/dsl.md), so the JSON reads like
 // the filter description with every default written out. `location` is left out on purpose:
 // it says where the text was, not what the filter is, and would make manifests path-dependent.
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include "spec/load_filter.h"
@@ -133,11 +134,20 @@ const char* name(BiasKind v) {
 }
 }  // namespace
 
+double sunPenumbraSlope(double angleDegrees) { return 2.0 * std::tan(0.5 * angleDegrees * M_PI / 180.0); }
+
 nlohmann::ordered_json specToJson(const FilterSpec& s) {
   using J = nlohmann::ordered_json;
   J j;
   j["name"] = s.name;
-  j["light"] = J{{"shape", name(s.light.shape)}, {"size_from_scene", s.light.sizeFromScene}, {"size", s.light.size}};
+  // A spot light keeps the keys it always had (every existing manifest stays byte-identical);
+  // the other types say so first and carry their own parameter.
+  if (s.light.type == LightType::Sun)
+    j["light"] = J{{"type", "sun"}, {"angle_from_scene", s.light.sizeFromScene}, {"angle", s.light.angleDegrees}};
+  else if (s.light.type == LightType::Point)
+    j["light"] = J{{"type", "point"}, {"radius_from_scene", s.light.sizeFromScene}, {"radius", s.light.size}};
+  else
+    j["light"] = J{{"shape", name(s.light.shape)}, {"size_from_scene", s.light.sizeFromScene}, {"size", s.light.size}};
   j["representation"] = name(s.representation);
   const MomentsSpec& m = s.moments;
   j["moments"] = J{{"warp", name(m.warp)},

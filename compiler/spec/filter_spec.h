@@ -15,14 +15,28 @@
 namespace shadowc {
 
 // ---- light -------------------------------------------------------------------------------
+// How the light projects onto its shadow map (docs/dsl.md "light"):
+//  Spot:  an area light (rect or disk, or a point of width 0) seen through a perspective frustum
+//         from its centre: today's light, and the default;
+//  Sun:   a directional light of angular diameter `angleDegrees`: an orthographic map fitted to
+//         the scene, penumbra (d_r - d_b) 2 tan(angle / 2) (templates/frame.glsl);
+//  Point: an omnidirectional sphere light of `size` = radius (cube maps): read by the checker,
+//         refused until cube maps exist (E0424 / E0425).
+enum class LightType { Spot, Sun, Point };
 enum class LightShape { Rect, Disk, Point };
 struct LightSpec {
   LightShape shape = LightShape::Rect;
   // Width of the light in world units. sizeFromScene = true means the runtime supplies it
   // through the frame uniforms (ShadowcFrame.lightWidth); false folds `size` into the shader.
+  // For a sun the flag says the same of the angle (the runtime supplies 2 tan(angle / 2)).
   bool sizeFromScene = true;
   double size = 0.0;
+  LightType type = LightType::Spot;
+  double angleDegrees = 0.0;  // Sun only: angular diameter (the sun: about 0.53)
 };
+// The factor of the orthographic penumbra, w = (d_r - d_b) * sunPenumbraSlope(angle): the
+// width of the sun's cone of directions one unit behind a blocker.
+double sunPenumbraSlope(double angleDegrees);
 
 // ---- representation ----------------------------------------------------------------------
 // What the prefilter passes store per shadow-map texel.
@@ -50,7 +64,7 @@ struct MomentsSpec {
   double minVariance = 1e-5;       // VSM minimum variance (per layer when layered)
   double bleedingReduction = 0.0;  // 0 = off; else Lauritzen's linstep(amount, 1, p)
   int lloydIterations = 8;         // for SplitPlacement::Lloyd (needs scene histogram)
-  double momentBias = 3e-5;       // Msm: alpha of b' = (1 - alpha) b + alpha b* (Algorithm 3)
+  double momentBias = 3e-5;        // Msm: alpha of b' = (1 - alpha) b + alpha b* (Algorithm 3)
 };
 
 // ---- storage -----------------------------------------------------------------------------

@@ -23,6 +23,9 @@ std::string call(std::string_view name, const std::vector<std::string>& args) {
 }
 
 std::string light(const LightSpec& l) {
+  const std::string fromScene = "scene";
+  if (l.type == LightType::Sun) return call("sun", {"angle: " + (l.sizeFromScene ? fromScene : num(l.angleDegrees))});
+  if (l.type == LightType::Point) return call("point", {"radius: " + (l.sizeFromScene ? fromScene : num(l.size))});
   if (l.shape == LightShape::Point) return "point";
   const char* shape = l.shape == LightShape::Rect ? "area" : "disk";
   return call(shape, {"size: " + (l.sizeFromScene ? std::string("scene") : num(l.size))});

@@ -9,6 +9,8 @@
 #include <map>
 #include <optional>
 
+#include "spec/value_reader.h"
+
 namespace shadowc::spec {
 namespace {
 
@@ -16,45 +18,13 @@ using dsl::Argument;
 using dsl::DiagId;
 using dsl::Setting;
 using dsl::Value;
-using Names = std::vector<std::string_view>;
 
-std::string join(const Names& names) {
-  std::string out;
-  for (std::string_view n : names) out += (out.empty() ? "" : ", ") + std::string(n);
-  return out;
-}
+const Names kSettings = {"light",    "depth", "moments",  "storage", "blur",      "mips",     "blocker",  "kernel",
+                         "sampling", "bias",  "fallback", "contact", "early_out", "bleeding", "map_size", "cascades"};
 
-std::string describeValue(const Value& v) {
-  switch (v.kind) {
-    case Value::Kind::Number:
-      return "number '" + v.text + "'";
-    case Value::Kind::Size:
-      return "size '" + v.text + "'";
-    case Value::Kind::Name:
-      return "name '" + v.text + (v.hasArguments ? "(...)'" : "'");
-  }
-  return "'" + v.text + "'";
-}
-
-struct Range {
-  double lo, hi;
-  bool loOpen = false, hiOpen = false;
-  std::string text() const { return fmt::format("in {}{}, {}{}", loOpen ? "(" : "[", lo, hi, hiOpen ? ")" : "]"); }
-  bool contains(double v) const { return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi); }
-};
-
-struct Param {
-  std::string_view name;
-  bool positional = false;
-};
-using Bound = std::map<std::string_view, const Value*>;
-
-const Names kSettings = {"light",    "depth", "moments",  "storage", "blur",      "mips",     "blocker", "kernel",
-                         "sampling", "bias",  "fallback", "contact", "early_out", "bleeding", "map_size"};
-
-class SettingsReader {
+class SettingsReader : ValueReader {
  public:
-  SettingsReader(const dsl::FilterDecl& f, dsl::DiagnosticSink& sink) : f_(f), sink_(sink) {}
+  SettingsReader(const dsl::FilterDecl& f, dsl::DiagnosticSink& sink) : ValueReader(sink), f_(f) {}
 
   SettingsRead run() {
     out_.spec.name = f_.name;
@@ -93,139 +63,6 @@ class SettingsReader {
   }
 
  private:
-  // ---- reporting helpers ---------------------------------------------------------------------
-  template <typename... Args>
-  void at(const Value& v, DiagId id, const Args&... args) {
-    sink_.report(id, v.line, v.column, v.length, args...);
-  }
-  // ---- typed readers ---------------------------------------------------------------------------
-  // Index of v's name in `options` (v may carry arguments), or nullopt after a diagnostic.
-  std::optional<size_t> variant(const Value& v, const std::string& what, const Names& options) {
-    if (v.kind != Value::Kind::Name) {
-      at(v, DiagId::wrongType, what, "one of: " + join(options), describeValue(v));
-      return std::nullopt;
-    }
-    auto it = std::find(options.begin(), options.end(), v.text);
-    if (it == options.end()) {
-      at(v, DiagId::unknownValue, v.text, what, join(options));
-      sink_.suggest(support::closestMatch(v.text, options));
-      return std::nullopt;
-    }
-    return static_cast<size_t>(it - options.begin());
-  }
-  // Like variant() for a plain enum value: arguments are an error.
-  std::optional<size_t> choice(const Value* v, const std::string& what, const Names& options) {
-    auto idx = variant(*v, what, options);
-    if (idx && v->hasArguments) {
-      at(*v, DiagId::takesNoArguments, v->text);
-      return std::nullopt;
-    }
-    return idx;
-  }
-  std::optional<double> number(const Value* v, const std::string& what, const Range& r,
-                               const std::string& rangeText = "") {
-    if (v->kind != Value::Kind::Number) {
-      at(*v, DiagId::wrongType, what, "a number", describeValue(*v));
-      return std::nullopt;
-    }
-    if (!r.contains(v->number)) {
-      at(*v, DiagId::outOfRange, what, rangeText.empty() ? r.text() : rangeText, v->text);
-      return std::nullopt;
-    }
-    return v->number;
-  }
-  std::optional<int> integer(const Value* v, const std::string& what, int lo, int hi,
-                             const std::string& rangeText = "") {
-    if (v->kind == Value::Kind::Number && !v->integer && v->number != std::floor(v->number)) {
-      at(*v, DiagId::notInteger, what, v->text);
-      return std::nullopt;
-    }
-    auto n = number(v, what, Range{double(lo), double(hi)}, rangeText);
-    if (!n) return std::nullopt;
-    return static_cast<int>(*n);
-  }
-  std::optional<int> squareSize(const Value* v, const std::string& what, int lo, int hi) {
-    if (v->kind != Value::Kind::Size) {
-      at(*v, DiagId::wrongType, what, "a size NxN such as 3x3", describeValue(*v));
-      return std::nullopt;
-    }
-    if (v->width != v->height) {
-      at(*v, DiagId::sizeNotSquare, what, v->width, v->height);
-      return std::nullopt;
-    }
-    if (v->width < lo || v->width > hi) {
-      at(*v, DiagId::outOfRange, what, fmt::format("NxN with N in [{}, {}]", lo, hi), v->text);
-      return std::nullopt;
-    }
-    return v->width;
-  }
-
-  // One range for every quadtree height (kernel and blocker walks, Next/Child tables, unrolled
-  // traversal): height 0 would be a single box query (that is 'kernel penumbra'), and height 6
-  // has 5461 nodes, past what a constant table or an unrolled walk should fold in.
-  std::optional<int> quadtreeHeight(const Value* v, const std::string& what) {
-    if (v->kind == Value::Kind::Number && v->number == std::floor(v->number) &&
-        (v->number < kMinQuadtreeHeight || v->number > kMaxQuadtreeHeight)) {
-      at(*v, DiagId::quadtreeHeightRange, what, kMinQuadtreeHeight, kMaxQuadtreeHeight, v->text);
-      return std::nullopt;
-    }
-    return integer(v, what, kMinQuadtreeHeight, kMaxQuadtreeHeight);
-  }
-
-  // Binds call arguments to parameters (positional in declaration order, or by name).
-  bool bind(const Value& call, const std::vector<Param>& params, Bound& out) {
-    if (params.empty()) {
-      if (!call.arguments.empty()) {
-        at(call, DiagId::takesNoArguments, call.text);
-        return false;
-      }
-      return true;
-    }
-    Names names, positional;
-    for (const Param& p : params) {
-      names.push_back(p.name);
-      if (p.positional) positional.push_back(p.name);
-    }
-    bool ok = true;
-    size_t nextPositional = 0;
-    for (const Argument& a : call.arguments) {
-      std::string_view name;
-      if (a.name.empty()) {
-        if (nextPositional >= positional.size()) {
-          at(a.value, DiagId::tooManyArguments, call.text, positional.size());
-          ok = false;
-          continue;
-        }
-        name = positional[nextPositional++];
-      } else {
-        auto it = std::find(names.begin(), names.end(), a.name);
-        if (it == names.end()) {
-          sink_.report(DiagId::unknownArgument, a.line, a.column, static_cast<int>(a.name.size()), a.name, call.text,
-                       join(names));
-          sink_.suggest(support::closestMatch(a.name, names));
-          ok = false;
-          continue;
-        }
-        name = *it;
-      }
-      if (out.count(name)) {
-        sink_.report(DiagId::duplicateArgument, a.line, a.column,
-                     static_cast<int>(a.name.empty() ? a.value.length : a.name.size()), name, call.text);
-        ok = false;
-        continue;
-      }
-      out[name] = &a.value;
-    }
-    return ok;
-  }
-  static const Value* get(const Bound& b, std::string_view name) {
-    auto it = b.find(name);
-    return it == b.end() ? nullptr : it->second;
-  }
-  static std::string arg(std::string_view name, const Value& call) {
-    return fmt::format("'{}' of '{}'", name, call.text);
-  }
-
   // ---- settings ----------------------------------------------------------------------------------
   void read(const Setting& s) {
     const Value& v = s.value;
@@ -259,35 +96,70 @@ class SettingsReader {
       if (auto c = choice(&v, what, {"none", "minmax"})) out_.spec.earlyOutMinMax = *c == 1;
     } else if (s.keyword == "bleeding")
       out_.bleeding = &s, readBleeding(v, what);
+    else if (s.keyword == "cascades")
+      readCascades(s);
     else if (s.keyword == "map_size") {
       if (auto n = integer(&v, what, 16, 16384)) out_.spec.mapSize = *n;
     }
   }
 
+  // `light`: the projection (spot / sun / point) and the light's size (docs/dsl.md "light").
+  // area / disk / bare point are today's spot light, spelled as always; `spot(...)` is the same
+  // light with its type written out; both give the same FilterSpec, so the same output.
   void readLight(const Value& v, const std::string& what) {
-    auto idx = variant(v, what, {"area", "disk", "point"});
+    auto idx = variant(v, what, {"area", "disk", "point", "spot", "sun"});
     if (!idx) return;
+    LightSpec& l = out_.spec.light;
     Bound b;
-    if (*idx == 2) {
-      if (bind(v, {}, b)) out_.spec.light = LightSpec{LightShape::Point, false, 0.0};
+    if (*idx == 2 && !v.hasArguments) {
+      l = LightSpec{LightShape::Point, false, 0.0};  // infinitesimal, in a spot frustum: hard shadows
       return;
     }
-    out_.spec.light.shape = *idx == 0 ? LightShape::Rect : LightShape::Disk;
-    if (!bind(v, {{"size", true}}, b)) return;
-    const Value* size = get(b, "size");
-    if (!size || (size->kind == Value::Kind::Name && size->text == "scene" && !size->hasArguments)) {
-      out_.spec.light.sizeFromScene = true, out_.spec.light.size = 0.0;
+    if (*idx == 2) {  // omnidirectional sphere light (cube maps); refused in light_rules.cpp
+      l.type = LightType::Point;
+      if (!bind(v, {{"radius", true}}, b)) return;
+      if (auto r = numberOrScene(get(b, "radius"), arg("radius", v), Range{0, 1e4}))
+        l.sizeFromScene = r->fromScene, l.size = r->value;
       return;
     }
-    if (size->kind == Value::Kind::Name) {
-      at(*size, DiagId::wrongType, arg("size", v), "a number or 'scene'", describeValue(*size));
+    if (*idx == 4) {
+      // Angular diameter in degrees: the sun is about 0.53; past 45 the orthographic penumbra
+      // 2 tan(angle / 2) stops being a small-cone estimate.
+      l.type = LightType::Sun;
+      l.shape = LightShape::Disk;
+      if (!bind(v, {{"angle", true}}, b)) return;
+      if (auto a = numberOrScene(get(b, "angle"), arg("angle", v), Range{0, 45, true}))
+        l.sizeFromScene = a->fromScene, l.angleDegrees = a->value, out_.lightSizeGiven = !a->fromScene;
       return;
     }
-    if (auto n = number(size, arg("size", v), Range{0, 1e4, true})) {
-      out_.spec.light.sizeFromScene = false, out_.spec.light.size = *n;
-      out_.lightSizeGiven = true;
+    const Value* shape = nullptr;
+    if (*idx == 3) {
+      if (!bind(v, {{"shape", true}, {"size", false}}, b)) return;
+      shape = get(b, "shape");
+      if (shape) {
+        auto s = choice(shape, arg("shape", v), {"area", "disk", "point"});
+        if (!s) return;
+        if (*s == 2) {
+          if (get(b, "size")) at(*get(b, "size"), DiagId::takesNoArguments, "spot(shape: point)");
+          l = LightSpec{LightShape::Point, false, 0.0};
+          return;
+        }
+        l.shape = *s == 0 ? LightShape::Rect : LightShape::Disk;
+      } else {
+        l.shape = LightShape::Rect;
+      }
+    } else {
+      l.shape = *idx == 0 ? LightShape::Rect : LightShape::Disk;
+      if (!bind(v, {{"size", true}}, b)) return;
+    }
+    if (auto s = numberOrScene(get(b, "size"), arg("size", v), Range{0, 1e4, true})) {
+      l.sizeFromScene = s->fromScene, l.size = s->value;
+      out_.lightSizeGiven = !s->fromScene;
     }
   }
+
+  // `cascades`: read so that the checker can say it is not implemented (light_rules.cpp).
+  void readCascades(const Setting& s) { out_.cascades = &s; }
 
   void readDepth(const Setting& s) {
     out_.representation = &s;
@@ -594,7 +466,6 @@ class SettingsReader {
   }
 
   const dsl::FilterDecl& f_;
-  dsl::DiagnosticSink& sink_;
   SettingsRead out_;
 };
 

@@ -33,4 +33,32 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal) {
 #endif
 }
 
+
+#ifdef SHADOWC_LIGHT_ORTHO
+// A sun (frame_ortho.glsl): every receiver sees the light along -z of the light view, and a texel
+// is 2 halfExtent / mapSize wide at any depth.
+#undef shadowc_biasedLightPosition
+#undef shadowc_bias
+vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal) {
+  vec3 p = worldPos;
+#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_NORMAL_OFFSET_KIND
+  float texelWorld = 2.0 * shadowc_frame().lightParams.x / float(shadowc_mapSize().x);
+  p += worldNormal * (SHADOWC_NORMAL_OFFSET * texelWorld);
+#endif
+  vec3 pl = (shadowc_frame().lightView * vec4(p, 1.0)).xyz;
+  return vec4(p, pl.z > 0.0 ? 1.0 : 0.0);
+}
+
+float shadowc_bias(vec3 worldPos, vec3 worldNormal) {
+#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_SLOPE_SCALED_KIND
+  vec3 nl = mat3(shadowc_frame().lightView) * worldNormal;
+  float len = length(nl);
+  float ndotl = len > 0.0 ? clamp(-nl.z / len, 0.0, 1.0) : 0.0;
+  return max(SHADOWC_BIAS_SLOPE * (1.0 - ndotl), SHADOWC_BIAS_CONSTANT);
+#else
+  return SHADOWC_BIAS_CONSTANT;
+#endif
+}
+#endif
+
 #endif

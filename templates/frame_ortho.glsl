@@ -1,0 +1,45 @@
+// frame_ortho.glsl — frame.glsl's light-space functions for a directional light (a sun), under
+// SHADOWC_LIGHT_ORTHO (the planner defines it for `light sun(...)`). Conventions:
+//  * Light view space: +z along the sun's direction of travel, the origin on a plane in front
+//    of the scene; the map is an orthographic projection fitted to the scene's bounds:
+//        uv = 0.5 + 0.5 * p.xy / halfExtent        (lightParams.x = halfExtent, world units)
+//  * Depth is linear in the orthographic z, d = (z - near) / (far - near), as for a spot.
+//  * lightParams.w ("lightWidth") is the slope of the penumbra, 2 tan(angle / 2) for a sun of
+//    angular diameter `angle`: a receiver dz behind a planar blocker sees the sun's cone cut
+//    the blocker's plane in a disk of diameter dz * 2 tan(angle / 2), so
+//        penumbra (world) = (d_r - d_b) * 2 tan(angle / 2)
+//    against the perspective form (d_r - d_b) / d_b * lightWidth of a spot.
+#ifndef SHADOWC_FRAME_ORTHO_GLSL
+#define SHADOWC_FRAME_ORTHO_GLSL
+
+// World position -> (uv, normalized depth d, view z).
+vec4 shadowc_lightSpace(vec3 worldPos) {
+  vec3 p = (shadowc_frame().lightView * vec4(worldPos, 1.0)).xyz;
+  vec2 uv = 0.5 + 0.5 * p.xy / shadowc_frame().lightParams.x;
+  float d = (p.z - shadowc_frame().lightParams.y) / (shadowc_frame().lightParams.z - shadowc_frame().lightParams.y);
+  return vec4(uv, d, p.z);
+}
+
+float shadowc_viewZ(float d) { return shadowc_frame().lightParams.y + d * (shadowc_frame().lightParams.z - shadowc_frame().lightParams.y); }
+
+// A world length across the light's direction, in uv units.
+float shadowc_worldToUV(float w) { return w / (2.0 * shadowc_frame().lightParams.x); }
+
+// Blocker search width (uv) for a receiver at view depth zr: the sun's cone from the receiver
+// cut at the near plane, the widest cut of any occluder plane.
+float shadowc_searchWidthUV(float slope, float zr) {
+  return shadowc_worldToUV(slope * max(zr - shadowc_frame().lightParams.y, 0.0));
+}
+
+// Filter width (uv) for a receiver at zr behind a blocker at zb: the cone cut at the blocker's
+// plane, exact for a planar occluder across the light's direction.
+float shadowc_penumbraWidthUV(float slope, float zr, float zb) {
+  return shadowc_worldToUV(slope * max(zr - zb, 0.0));
+}
+
+// bias.glsl's two light-dependent functions take their orthographic form (end of bias.glsl);
+// the perspective ones it defines first are renamed out of the way, and unused.
+#define shadowc_biasedLightPosition shadowc_biasedLightPositionSpot
+#define shadowc_bias shadowc_biasSpot
+
+#endif
