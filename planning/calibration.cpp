@@ -21,6 +21,7 @@ CalibrationRun calibrationRun(rt::VulkanContext& ctx, const Candidate& c, const 
   DescribeOptions d;
   d.slopeBias = useSlopeBias(one.stats, rules.rules);
   d.contactEpsilon = one.stats[0].contactEpsilon;
+  d.sun = one.prepared[0]->scene.light.type == rt::LightType::Sun;  // each scene is calibrated on its own
   const driver::Result r = driver::compileSpec(candidateSpec(c, d));
   if (!r.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile:\n" + r.log);
   rt::RunOptions options;

@@ -131,6 +131,7 @@ FilterSpec candidateSpec(const Candidate& c, const DescribeOptions& o) {
   s.name = o.filterName;
   s.light.shape = LightShape::Rect;
   s.light.sizeFromScene = true;  // the runtime supplies the scene's light width
+  if (o.sun) s.light.type = LightType::Sun, s.light.shape = LightShape::Disk;  // the scene's sun angle
   const bool depthFamily = c.family == "hard" || c.family == "pcf" || c.family == "pcss";
   if (depthFamily) {
     s.representation = Representation::Depth;

@@ -41,9 +41,10 @@ const Candidate* findCandidate(const std::string& name);
 
 struct DescribeOptions {
   std::string filterName = "planned";
-  bool slopeBias = true;                           // depth families: slope-scaled vs constant bias
-  double contactEpsilon = 0.01;                    // normalized depth
-  std::vector<std::string> header;                 // comment lines at the top (without '#')
+  bool slopeBias = true;            // depth families: slope-scaled vs constant bias
+  double contactEpsilon = 0.01;     // normalized depth
+  bool sun = false;                 // the scenes' light is a sun: `light sun` (angle from the scene), else a spot
+  std::vector<std::string> header;  // comment lines at the top (without '#')
   std::map<Feature, std::string> featureComments;  // one comment per feature (without '#')
 };
 

@@ -63,11 +63,24 @@ bool useSlopeBias(const std::vector<SceneStats>& stats, const PlanRules& rules) 
              .first > rules.slopeDegrees;
 }
 
+// The candidates' light follows the scenes' (a filter reads its map through its light's
+// projection); scenes of both kinds cannot share one filter.
+bool sunScenes(const PlanScenes& scenes) {
+  size_t suns = 0;
+  for (const auto& p : scenes.prepared) suns += p->scene.light.type == rt::LightType::Sun;
+  if (suns != 0 && suns != scenes.prepared.size())
+    throw PlanError(
+        "plan scenes mix sun and spot lights: one filter reads its map through one projection; plan "
+        "them separately");
+  return suns != 0;
+}
+
 Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
                              const PlanModel& model, int warmup, int runs, std::map<std::string, Measurement>* cache) {
   DescribeOptions d;
   d.slopeBias = useSlopeBias(scenes.stats, model.rules);
   d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
+  d.sun = sunScenes(scenes);
   const std::string key = c.name + "|" + sceneList(scenes) + "|" + (d.slopeBias ? "slope" : "constant");
   if (cache) {
     auto it = cache->find(key);
@@ -221,6 +234,7 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
   d.filterName = request.filterName;
   d.slopeBias = useSlopeBias(scenes.stats, model.rules);
   d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
+  d.sun = sunScenes(scenes);
   const bool depthFamily = result.chosen.has(Feature::SlopeBias);
   for (Feature f : kFeatures) {
     const FeatureVerdict& v = verdicts.at(f);

@@ -47,6 +47,8 @@ ResolvedScene resolveScene(const SceneEntry& entry, const std::filesystem::path&
     }
     if (!j.is_object() || !j.contains("light") || !j["light"].is_object())
       throw rt::SceneError(fmt::format("{}: error: light: needed to replace its size", entry.scene));
+    if (j["light"].value("type", std::string("spot")) == "sun")
+      throw rt::SceneError(fmt::format("{}: error: light: a sun has an angle, not a size to replace", entry.scene));
     j["name"] = entry.label;
     j["light"]["size"] = *entry.lightSize;
     if (j.contains("objects") && j["objects"].is_array())

@@ -1,5 +1,7 @@
 #include "runtime/harness/scene_run.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <stdexcept>
 #include <utility>
@@ -45,6 +47,17 @@ SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, cons
   if (scene.reference.size() != scene.mask.size())
     throw std::invalid_argument("scene '" + scene.scene.name +
                                 "' was prepared without its reference (traceReference = false)");
+  // The runtime knows no technique, but the projection is the frame's: a filter reads the map
+  // through its light's (frame.glsl or frame_ortho.glsl), so a sun filter needs a sun scene.
+  const nlohmann::json& spec = passes.manifest.spec;
+  const bool sunFilter =
+      spec.contains("light") && spec["light"].is_object() && spec["light"].value("type", std::string("spot")) == "sun";
+  const bool sunScene = scene.scene.light.type == LightType::Sun;
+  if (sunFilter != sunScene)
+    throw std::invalid_argument(fmt::format(
+        "filter '{}' is for a {} but scene '{}' has a {}: compile the filter with 'light {}' (docs/dsl.md \"light\")",
+        passes.manifest.filter, sunFilter ? "sun" : "spot light", scene.scene.name, sunScene ? "sun" : "spot light",
+        sunScene ? "sun" : "area(size: scene)"));
   RunInputs inputs;
   inputs.frame = scene.setup.frame;
   inputs.mapSize = scene.setup.mapSize;

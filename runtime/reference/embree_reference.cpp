@@ -52,9 +52,13 @@ struct PixelValue {
 class PixelTracer {
  public:
   PixelTracer(const EmbreeScene& embree, int samplesPerAxis, ReferenceMeasure measure)
-      : embree_(embree), light_(embree.scene().light), n_(light_.width > 0 ? samplesPerAxis : 1), measure_(measure) {}
+      : embree_(embree),
+        light_(embree.scene().light),
+        n_(light_.width > 0 || light_.type == LightType::Sun ? samplesPerAxis : 1),
+        measure_(measure) {}
 
   PixelValue visibility(const glm::vec3& p, const glm::vec3& normal, uint64_t pixelIndex) const {
+    if (light_.type == LightType::Sun) return sunVisibility(p, normal, pixelIndex);
     const glm::vec3 org = p + normalOffset(p, light_.position) * normal;
     const bool weighted = measure_ == ReferenceMeasure::ShadowingTerm;
     // Double sums: 1024^2 samples of weights spanning many orders of magnitude (depth_range).
@@ -91,8 +95,33 @@ class PixelTracer {
   }
 
  private:
+  // A sun: stratified directions on its cone (sunSampleDirection), each weighted by
+  // cos(theta_receiver) alone (cos_l / r^2 is the same for every point of a distant light);
+  // directions below the tangent plane are not part of the shadowing term's light.
+  PixelValue sunVisibility(const glm::vec3& p, const glm::vec3& normal, uint64_t pixelIndex) const {
+    const glm::vec3 org = p + normalOffset(p, p) * normal;
+    const bool weighted = measure_ == ReferenceMeasure::ShadowingTerm;
+    double unoccluded = 0, total = 0;
+    int rays = 0;
+    for (int j = 0; j < n_; ++j) {
+      for (int i = 0; i < n_; ++i) {
+        const uint64_t h = mix(mix(pixelIndex ^ kJitterSeed) + static_cast<uint64_t>(j * n_ + i));
+        const glm::vec3 dir = sunSampleDirection(light_, i, j, n_, unitFloat(h), unitFloat(mix(h)));
+        const double cosR = glm::dot(glm::dvec3(normal), glm::dvec3(dir));
+        if (weighted && cosR <= 0) continue;
+        const double w = weighted ? cosR : 1.0;
+        total += w;
+        ++rays;
+        if (cosR > 0 && !embree_.occluded(org, dir * rayLength_, 1.0f)) unoccluded += w;
+      }
+    }
+    if (total <= 0) return {0.0f, rays};
+    return {static_cast<float>(std::clamp(unoccluded / total, 0.0, 1.0)), rays};
+  }
+
   const EmbreeScene& embree_;
   const AreaLight& light_;
+  float rayLength_ = 2.0f * std::max(sceneBounds(embree_.scene()).diagonal(), 1.0f);
   int n_;
   ReferenceMeasure measure_;
 };
@@ -161,6 +190,40 @@ const char* referenceMeasureName(ReferenceMeasure m) {
   return m == ReferenceMeasure::ShadowingTerm ? "shadowing_term" : "light_fraction";
 }
 
+namespace {
+// Concentric square -> disk mapping (Shirley & Chiu 1997): keeps the strata compact and equal in
+// area. (u, v) in [0, 1)^2 -> signed radius r in [-1, 1] and angle phi.
+void concentricDisk(float u, float v, float& r, float& phi) {
+  const float a = 2.0f * u - 1.0f, c = 2.0f * v - 1.0f;
+  r = 0, phi = 0;
+  constexpr float kQuarterPi = std::numbers::pi_v<float> / 4.0f;
+  if (a == 0 && c == 0) {
+    r = 0;
+  } else if (std::abs(a) > std::abs(c)) {
+    r = a;
+    phi = kQuarterPi * (c / a);
+  } else {
+    r = c;
+    phi = 2.0f * kQuarterPi - kQuarterPi * (a / c);
+  }
+}
+}  // namespace
+
+glm::vec3 sunSampleDirection(const AreaLight& light, int i, int j, int n, float ju, float jv) {
+  const float u = (static_cast<float>(i) + ju) / static_cast<float>(n);
+  const float v = (static_cast<float>(j) + jv) / static_cast<float>(n);
+  float r = 0, phi = 0;
+  concentricDisk(u, v, r, phi);
+  // Equal areas of the unit disk -> equal solid angles of the cap: 1 - cos(theta) = r^2 (1 - cos(theta_max)).
+  const double cosMax = std::cos(0.5 * glm::radians(double(light.angleDegrees)));
+  const double cosT = 1.0 - double(r) * double(r) * (1.0 - cosMax);
+  const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)) * (r < 0 ? -1.0 : 1.0);
+  const LightBasis b = lightBasis(light);
+  const glm::dvec3 d = -glm::dvec3(b.z) * cosT +
+                       (glm::dvec3(b.x) * std::cos(double(phi)) + glm::dvec3(b.y) * std::sin(double(phi))) * sinT;
+  return glm::vec3(glm::normalize(d));
+}
+
 glm::vec3 lightSamplePoint(const AreaLight& light, int i, int j, int n, float ju, float jv) {
   const float u = (static_cast<float>(i) + ju) / static_cast<float>(n);  // [0, 1)
   const float v = (static_cast<float>(j) + jv) / static_cast<float>(n);
@@ -170,19 +233,8 @@ glm::vec3 lightSamplePoint(const AreaLight& light, int i, int j, int n, float ju
     x = (u - 0.5f) * light.width;
     y = (v - 0.5f) * light.width;
   } else {
-    // Concentric square -> disk mapping: keeps the strata compact and equal in area.
-    const float a = 2.0f * u - 1.0f, c = 2.0f * v - 1.0f;
     float r = 0, phi = 0;
-    constexpr float kQuarterPi = std::numbers::pi_v<float> / 4.0f;
-    if (a == 0 && c == 0) {
-      r = 0;
-    } else if (std::abs(a) > std::abs(c)) {
-      r = a;
-      phi = kQuarterPi * (c / a);
-    } else {
-      r = c;
-      phi = 2.0f * kQuarterPi - kQuarterPi * (a / c);
-    }
+    concentricDisk(u, v, r, phi);
     r *= 0.5f * light.width;
     x = r * std::cos(phi);
     y = r * std::sin(phi);

@@ -5,7 +5,8 @@
 // Light behind that plane is the N.L term's business, not the shadow's. The unweighted fraction
 // of the whole light (what this file computed before) stays available as LightFraction.
 // Stratified N x N samples on the light rectangle, or on the disk through the concentric
-// mapping (Shirley & Chiu 1997); a point light (width 0) is one ray. Results are cached on disk
+// mapping (Shirley & Chiu 1997); a point light (width 0) is one ray; a sun, stratified directions
+// on its cone of directions, weighted by cos(theta_receiver). Results are cached on disk
 // by content (measure, scene hash, exact G-buffer bytes, samples).
 #pragma once
 
@@ -72,5 +73,9 @@ float referenceVisibilityAt(const Scene& scene, const glm::vec3& position, const
 // Point on the light for stratum (i, j) of n x n with jitter (ju, jv) in [0, 1): rectangle
 // sides along lightBasis x/y; disk by the concentric mapping. Exposed for tests.
 glm::vec3 lightSamplePoint(const AreaLight& light, int i, int j, int n, float ju, float jv);
+// A sun's direction (unit, towards the sun) for stratum (i, j) of n x n: the concentric disk
+// mapped onto the cap of half-angle angle / 2 around -light.direction, equal solid angle per
+// stratum. Exposed for tests.
+glm::vec3 sunSampleDirection(const AreaLight& light, int i, int j, int n, float ju, float jv);
 
 }  // namespace shadowc::rt

@@ -30,6 +30,11 @@ ordered_json light(const char* shape, ordered_json position, ordered_json direct
   return {{"shape", shape}, {"position", position}, {"direction", direction}, {"up", up}, {"size", size}};
 }
 
+// A sun: direction of travel and angular diameter in degrees (docs/scenes.md).
+ordered_json sun(ordered_json direction, double angleDegrees, ordered_json up = v3(0, 0, 1)) {
+  return {{"type", "sun"}, {"direction", direction}, {"up", up}, {"angle", angleDegrees}};
+}
+
 ordered_json transform(ordered_json translate, ordered_json rotate = nullptr, ordered_json scale = nullptr) {
   ordered_json t = {{"translate", translate}};
   if (!rotate.is_null()) t["rotate"] = rotate;
@@ -182,6 +187,27 @@ const std::map<std::string, ordered_json>& builtins() {
         light("rect", v3(1.0, 7, 1.5), ordered_json(v3(-0.15, -1, -0.2)), 1.5),
         {floorPlane(8), meshObject("engine", kAssimpModels + "/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb",
                                    transform(v3(0, 1.1, 0), nullptr, 0.006))});
+    // A sun over two parallel planes: a half-plane edge at height 1 (x < 0) over the floor. The
+    // visibility across the penumbra is the cosine-weighted fraction of the sun's cone of directions
+    // that passes the edge, a closed form (tests/gpu/sun_closed_form_test.cpp). The sun is enlarged
+    // to 4 degrees so its penumbra (1 * 2 tan 2 deg = 0.07) spans texels and pixels.
+    t["sun_two_planes"] =
+        scene("sun_two_planes",
+              "A 4-degree sun straight down over a half-plane edge at height 1 above the floor: the penumbra is the "
+              "fraction of the sun's disk that passes the edge, known in closed form.",
+              camera(v3(0, 0.45, 1.2), v3(0, 0, 0), 40), sun(down, 4.0),
+              {floorPlane(4), plane("edge", 3, 3, transform(v3(-1.5, 1, 0)))});
+    // Outdoors: the real sun (0.53 degrees) low in the sky over a street of boxes, a sphere and a
+    // pole: long thin shadows, contact at every base, penumbrae from a few texels to a fraction.
+    t["sun_outdoor"] =
+        scene("sun_outdoor",
+              "The real sun (0.53 degrees) at about 35 degrees elevation over a 24 m ground with buildings, a sphere "
+              "and a pole: long shadows, contact at every base, penumbrae of a few texels.",
+              camera(v3(0, 5, 14), v3(0, 0, 0), 50), sun(ordered_json(v3(0.5, -0.8, -0.3)), 0.53),
+              {floorPlane(24), box("building_a", v3(3, 6, 3), transform(v3(-5, 3, -3))),
+               box("building_b", v3(2, 3.5, 4), transform(v3(3, 1.75, -5))),
+               box("wall", v3(6, 1.2, 0.3), transform(v3(0, 0.6, 3))), sphere("sphere", 1.0, transform(v3(4, 1, 3))),
+               box("pole", v3(0.15, 5, 0.15), transform(v3(-2, 2.5, 5)))});
     return t;
   }();
   return table;

@@ -49,16 +49,9 @@ glm::mat4 lightViewMatrix(const AreaLight& light) {
   return m;
 }
 
-FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint32_t height) {
-  if (mapSize == 0 || width == 0 || height == 0) {
-    throw SceneError(fmt::format("setupFrame: sizes must be positive (map {}, screen {}x{})", mapSize, width, height));
-  }
-  FrameSetup f;
-  f.mapSize = mapSize;
-  f.width = width;
-  f.height = height;
-  f.lightView = lightViewMatrix(scene.light);
+namespace {
 
+void fitSpot(const Scene& scene, FrameSetup& f) {
   // Fit to the vertices: the perspective image of a triangle in front of the light is the hull
   // of its vertices' images, so covering every vertex covers every surface.
   float maxTan = 0, minZ = std::numeric_limits<float>::max(), maxZ = 0;
@@ -91,7 +84,45 @@ FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint
   proj[2][3] = 1.0f;
   proj[3][2] = -fa * n / (fa - n);
   f.lightViewProj = proj * f.lightView;
+}
 
+// A sun: the view origin sits on the bounding sphere upstream of the scene, so every vertex has
+// z > 0; the orthographic box is the vertices' extent across the direction, with the same
+// margins as a spot's frustum.
+void fitSun(const Scene& scene, FrameSetup& f) {
+  const Bounds b = sceneBounds(scene);
+  const LightBasis basis = lightBasis(scene.light);
+  const glm::vec3 centre = b.empty() ? glm::vec3(0) : b.center();
+  const float radius = std::max(0.5f * b.diagonal(), 1e-3f);
+  const glm::vec3 origin = centre - basis.z * (1.1f * radius);
+  const glm::vec3 rows[3] = {basis.x, basis.y, basis.z};
+  for (int r = 0; r < 3; ++r) f.lightView[3][r] = -glm::dot(rows[r], origin);
+  float maxXY = 0, minZ = std::numeric_limits<float>::max(), maxZ = 0;
+  for (const Mesh& m : scene.meshes) {
+    for (const glm::vec3& p : m.positions) {
+      const glm::vec3 v = glm::vec3(f.lightView * glm::vec4(p, 1.0f));
+      maxXY = std::max({maxXY, std::abs(v.x), std::abs(v.y)});
+      minZ = std::min(minZ, v.z);
+      maxZ = std::max(maxZ, v.z);
+    }
+  }
+  if (maxZ <= 0) minZ = 1, maxZ = 2, maxXY = 1;
+  f.orthographic = true;
+  f.halfExtent = std::max(maxXY * kFovMargin, 1e-6f);
+  f.nearPlane = minZ * kNearMargin;
+  f.farPlane = std::max(maxZ * kFarMargin, f.nearPlane * 1.0001f);
+  // Vulkan clip: x_c = x / halfExtent, y_c = y / halfExtent (frame_ortho.glsl's uv), z_c in 0..1.
+  glm::mat4 proj(0.0f);
+  proj[0][0] = 1.0f / f.halfExtent;
+  proj[1][1] = 1.0f / f.halfExtent;
+  proj[2][2] = 1.0f / (f.farPlane - f.nearPlane);
+  proj[3][2] = -f.nearPlane / (f.farPlane - f.nearPlane);
+  proj[3][3] = 1.0f;
+  f.lightViewProj = proj * f.lightView;
+}
+
+void fitCamera(const Scene& scene, FrameSetup& f) {
+  const uint32_t width = f.width, height = f.height;
   // Camera: near/far from the distance to the scene's bounding box.
   const Bounds b = sceneBounds(scene);
   const Camera& cam = scene.camera;
@@ -112,13 +143,38 @@ FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint
                                        f.cameraFar);
   f.cameraProj[1][1] *= -1.0f;  // Vulkan's y points down: keep row 0 at the top of the image
   f.cameraViewProj = f.cameraProj * f.cameraView;
+}
+
+}  // namespace
+
+FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint32_t height) {
+  if (mapSize == 0 || width == 0 || height == 0) {
+    throw SceneError(fmt::format("setupFrame: sizes must be positive (map {}, screen {}x{})", mapSize, width, height));
+  }
+  FrameSetup f;
+  f.mapSize = mapSize;
+  f.width = width;
+  f.height = height;
+  f.lightView = lightViewMatrix(scene.light);
+  if (scene.light.type == LightType::Sun) {
+    fitSun(scene, f);
+  } else {
+    fitSpot(scene, f);
+  }
+  fitCamera(scene, f);
 
   std::memcpy(f.frame.lightView, glm::value_ptr(f.lightView), sizeof f.frame.lightView);
-  f.frame.lightParams[0] = f.tanHalfFov;
+  const bool sun = scene.light.type == LightType::Sun;
+  f.frame.lightParams[0] = sun ? f.halfExtent : f.tanHalfFov;
   f.frame.lightParams[1] = f.nearPlane;
   f.frame.lightParams[2] = f.farPlane;
-  f.frame.lightParams[3] = scene.light.width;
-  f.frame.lightShape[0] = scene.light.width <= 0 ? 2.0f : (scene.light.shape == LightShape::Disk ? 1.0f : 0.0f);
+  // A sun's lightWidth is the slope of its penumbra, 2 tan(angle / 2) (frame_ortho.glsl).
+  f.frame.lightParams[3] =
+      sun ? static_cast<float>(2.0 * std::tan(0.5 * glm::radians(double(scene.light.angleDegrees))))
+          : scene.light.width;
+  f.frame.lightShape[0] = sun                      ? 3.0f
+                          : scene.light.width <= 0 ? 2.0f
+                                                   : (scene.light.shape == LightShape::Disk ? 1.0f : 0.0f);
   f.frame.mapInfo[0] = static_cast<float>(mapSize);
   f.frame.mapInfo[1] = 1.0f / static_cast<float>(mapSize);
   f.frame.screenInfo[0] = static_cast<float>(width);

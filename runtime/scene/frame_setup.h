@@ -16,6 +16,10 @@ struct FrameSetup {
   glm::mat4 lightViewProj{1};   // world -> Vulkan clip for rasterizing the light depth
   glm::mat4 cameraViewProj{1};  // world -> Vulkan clip for the G-buffer
   float tanHalfFov = 1, nearPlane = 0.1f, farPlane = 100;
+  // A sun (LightType::Sun): an orthographic map, uv = 0.5 + 0.5 xy / halfExtent (frame_ortho.glsl);
+  // tanHalfFov is then unused.
+  bool orthographic = false;
+  float halfExtent = 0;
   uint32_t mapSize = 1024, width = 512, height = 512;
   // Camera parts of cameraViewProj (= cameraProj * cameraView), for G-buffer shaders and tools.
   glm::mat4 cameraView{1};  // world -> camera view (right-handed, looking down -z)
@@ -33,7 +37,8 @@ LightBasis lightBasis(const AreaLight& light);
 glm::mat4 lightViewMatrix(const AreaLight& light);
 
 // The light frustum covers the scene's bounds as seen from the light centre; near/far are
-// fitted to the bounds (near clamped > 0).
+// fitted to the bounds (near clamped > 0). A sun's orthographic box covers every vertex, its
+// view origin placed on the scene's bounding sphere, upstream along the sun's direction.
 FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint32_t height);
 
 }  // namespace shadowc::rt

@@ -1,4 +1,4 @@
-// A scene: camera, one area light, triangle meshes in world space. Loaded from JSON
+// A scene: camera, one light (an area spot light or a sun), triangle meshes in world space. Loaded from JSON
 // (docs/scenes.md) or built in (builtin_scenes.cpp). The runtime rasterizes it and Embree
 // traces it; nothing here knows about shadow filters.
 #pragma once
@@ -21,7 +21,13 @@ struct Mesh {
 };
 
 enum class LightShape { Rect, Disk };
+// Spot: an area light at `position` shining along `direction` (a perspective shadow map from its
+// centre). Sun: a directional light travelling along `direction` with angular diameter
+// `angleDegrees` (an orthographic map fitted to the scene; `position`, `shape` and `width` unused).
+enum class LightType { Spot, Sun };
 struct AreaLight {
+  LightType type = LightType::Spot;
+  float angleDegrees = 0.0f;  // Sun: angular diameter (the sun: about 0.53)
   LightShape shape = LightShape::Rect;
   glm::vec3 position{0, 10, 0};   // centre
   glm::vec3 direction{0, -1, 0};  // unit axis, into the scene

@@ -60,6 +60,11 @@ std::string Scene::contentHash() const {
   h.pod(light.direction);
   h.pod(light.up);
   h.pod(light.width);
+  // Added with suns: spot scenes hash as before (their reference caches stay valid).
+  if (light.type == LightType::Sun) {
+    h.str("sun");
+    h.pod(light.angleDegrees);
+  }
   h.pod(static_cast<uint64_t>(meshes.size()));
   for (const Mesh& m : meshes) {
     h.str(m.name);

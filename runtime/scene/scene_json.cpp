@@ -144,8 +144,34 @@ Camera readCamera(const Reader& r, const json& j) {
 AreaLight readLight(const Reader& r, const json& j) {
   const std::string p = "light";
   r.expectObject(j, p);
-  r.checkKeys(j, p, {"shape", "position", "direction", "up", "size"});
   AreaLight l;
+  if (j.contains("type")) {
+    const std::string type = r.string(j["type"], p + ".type");
+    if (type == "sun") {
+      // A sun: direction of travel and angular diameter; nothing has a position.
+      r.checkKeys(j, p, {"type", "direction", "up", "angle"});
+      l.type = LightType::Sun;
+      l.shape = LightShape::Disk;
+      l.width = 0.0f;
+      l.direction = r.unitVector(r.require(j, p, "direction"), p + ".direction");
+      if (j.contains("up")) l.up = r.unitVector(j["up"], p + ".up");
+      if (glm::length(glm::cross(l.direction, l.up)) < 1e-4f) {
+        l.up = std::abs(l.direction.y) < 0.9f ? glm::vec3(0, 1, 0) : glm::vec3(0, 0, 1);
+        if (j.contains("up")) r.fail(p + ".up", "is parallel to light.direction");
+      }
+      const double angle = r.number(r.require(j, p, "angle"), p + ".angle");
+      if (!(angle > 0 && angle <= 45))
+        r.fail(p + ".angle", fmt::format("expected an angular diameter in degrees in (0, 45], got {}", angle));
+      l.angleDegrees = static_cast<float>(angle);
+      return l;
+    }
+    if (type != "spot") {
+      const std::string near = support::closestMatch(type, {"spot", "sun"});
+      r.fail(p + ".type", fmt::format("unknown light type '{}' (expected spot or sun{})", type,
+                                      near.empty() ? "" : fmt::format("; did you mean '{}'?", near)));
+    }
+  }
+  r.checkKeys(j, p, {"type", "shape", "position", "direction", "up", "size"});
   if (j.contains("shape")) {
     const std::string shape = r.string(j["shape"], p + ".shape");
     if (shape == "rect") {
@@ -279,6 +305,7 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceLabel, co
     scene.meshes.push_back(readObject(r, objects[i], p, i, baseDir));
     // The shadow map is a perspective projection from the light centre (frame.glsl): it cannot
     // cover geometry on or behind the light's plane, and an area light emits only forwards.
+    if (scene.light.type == LightType::Sun) continue;  // an orthographic map covers any side
     float minZ = std::numeric_limits<float>::max();
     for (const glm::vec3& v : scene.meshes.back().positions) {
       minZ = std::min(minZ, glm::dot(v - scene.light.position, scene.light.direction));

@@ -9,11 +9,12 @@
 namespace shadowc::rt {
 namespace {
 
-// frame.glsl's shadowc_lightSpace, from the UBO alone.
+// frame.glsl's shadowc_lightSpace, from the UBO alone (frame_ortho.glsl's for a sun, lightShape.x 3).
 glm::vec4 lightSpace(const ShadowcFrame& f, const glm::vec3& world) {
   const glm::mat4 view = glm::make_mat4(f.lightView);
   const glm::vec3 p = glm::vec3(view * glm::vec4(world, 1.0f));
-  const glm::vec2 uv = 0.5f + 0.5f * glm::vec2(p) / (p.z * f.lightParams[0]);
+  const bool sun = f.lightShape[0] == 3.0f;
+  const glm::vec2 uv = 0.5f + 0.5f * glm::vec2(p) / ((sun ? 1.0f : p.z) * f.lightParams[0]);
   const float d = (p.z - f.lightParams[1]) / (f.lightParams[2] - f.lightParams[1]);
   return {uv, d, p.z};
 }
@@ -118,6 +119,30 @@ TEST(SceneFrameSetup, DepthRangeSpansMilliToTenThousand) {
 }
 
 TEST(SceneFrameSetup, RejectsZeroSizes) { EXPECT_THROW(setupFrame(loadScene("empty"), 0, 4, 4), SceneError); }
+
+// A sun: an orthographic map (the coverage test above runs on the sun scenes too), the penumbra
+// slope 2 tan(angle / 2) in lightParams.w, and the light-view z axis along the sun's direction.
+TEST(SceneFrameSetup, SunIsOrthographicWithThePenumbraSlope) {
+  const Scene s = loadScene("sun_outdoor");
+  ASSERT_EQ(s.light.type, LightType::Sun);
+  const FrameSetup f = setupFrame(s, 1024, 320, 240);
+  EXPECT_TRUE(f.orthographic);
+  EXPECT_EQ(f.frame.lightShape[0], 3.0f);
+  EXPECT_FLOAT_EQ(f.frame.lightParams[0], f.halfExtent);
+  EXPECT_NEAR(f.frame.lightParams[3], 2 * std::tan(0.5 * 0.53 * M_PI / 180), 1e-7);
+  const glm::mat4 view = glm::make_mat4(f.frame.lightView);
+  const glm::vec3 zAxis(view[0][2], view[1][2], view[2][2]);  // row 2: world direction of view +z
+  EXPECT_NEAR(glm::dot(zAxis, glm::normalize(glm::vec3(0.5f, -0.8f, -0.3f))), 1.0f, 1e-6f);
+  // Parallel projection: two points along the sun's direction share a uv, unlike a spot's.
+  const glm::vec3 a(1, 0, 2), b = a - 3.0f * zAxis;
+  const glm::vec4 la = lightSpace(f.frame, a), lb = lightSpace(f.frame, b);
+  EXPECT_NEAR(la.x, lb.x, 1e-5f);
+  EXPECT_NEAR(la.y, lb.y, 1e-5f);
+  EXPECT_NEAR(la.w - lb.w, 3.0f, 1e-4f);
+  const FrameSetup spot = setupFrame(loadScene("two_planes"), 1024, 320, 240);
+  EXPECT_FALSE(spot.orthographic);
+  EXPECT_NE(spot.frame.lightShape[0], 3.0f);
+}
 
 }  // namespace
 }  // namespace shadowc::rt
