@@ -201,7 +201,7 @@ const std::map<std::string, ordered_json>& builtins() {
     // pole: long thin shadows, contact at every base, penumbrae from a few texels to a fraction.
     t["sun_outdoor"] =
         scene("sun_outdoor",
-              "The real sun (0.53 degrees) at about 35 degrees elevation over a 24 m ground with buildings, a sphere "
+              "The real sun (0.53 degrees) at about 54 degrees elevation over a 24 m ground with buildings, a sphere "
               "and a pole: long shadows, contact at every base, penumbrae of a few texels.",
               camera(v3(0, 5, 14), v3(0, 0, 0), 50), sun(ordered_json(v3(0.5, -0.8, -0.3)), 0.53),
               {floorPlane(24), box("building_a", v3(3, 6, 3), transform(v3(-5, 3, -3))),
