@@ -61,7 +61,13 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   // A sun's "width" is the slope of its orthographic penumbra, 2 tan(angle / 2) (frame.glsl under
   // SHADOWC_LIGHT_ORTHO); the flag is defined only for a sun, so spot lights emit what they did.
   const bool sun = s.light.type == LightType::Sun;
-  if (sun) defBool("SHADOWC_LIGHT_ORTHO", true);
+  if (sun) {
+    defBool("SHADOWC_LIGHT_ORTHO", true);
+    // The box standing for the sun's disk (frame_ortho.glsl): same second moment, side D sqrt(3)/2;
+    // Poisson taps of the depth representation fill a disk and keep the diameter.
+    const bool diskTaps = s.representation == Representation::Depth && s.sampling.pattern == PcfPattern::Poisson;
+    defReal("SHADOWC_SUN_BOX_SCALE", diskTaps ? 1.0 : std::sqrt(3.0) / 2.0);
+  }
   if (!s.light.sizeFromScene)
     defReal("SHADOWC_LIGHT_WIDTH", sun                                  ? sunPenumbraSlope(s.light.angleDegrees)
                                    : s.light.shape == LightShape::Point ? 0.0
