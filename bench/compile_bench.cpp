@@ -17,6 +17,8 @@
 
 #include "compiler/backend/spirv_backend.h"
 #include "compiler/driver/driver.h"
+#include "compiler/emit/shader_emitter.h"
+#include "compiler/plan/planner.h"
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;
@@ -64,26 +66,37 @@ int main(int argc, char** argv) {
     }
     const std::string name = r.artifact->spec.name;
     const fs::path dir = tmp / name;
-    std::vector<std::pair<std::string, std::string>> shaders;  // stem, glsl
+    // stem, glsl, and the calls the driver keeps (an unrolled quadtree's node callbacks: the
+    // same -O compile as the driver's; the external spirv-opt of (c) has no such option).
+    struct Shader {
+      std::string stem, glsl;
+      std::vector<std::string> keep;
+    };
+    const shadowc::PassGraph graph = shadowc::planPasses(r.artifact->spec);
+    std::vector<Shader> shaders;
     for (const auto& f : r.artifact->files)
-      if (f.name.ends_with(".glsl") && f.name != r.artifact->manifest.shade.glsl)
-        shaders.emplace_back(f.name.substr(0, f.name.size() - 5), f.bytes);
+      if (f.name.ends_with(".glsl") && f.name != r.artifact->manifest.shade.glsl) {
+        Shader s{f.name.substr(0, f.name.size() - 5), f.bytes, {}};
+        for (const shadowc::PassSource& src : graph.sources)
+          if (src.stem == s.stem) s.keep = shadowc::keptCalls(src.values);
+        shaders.push_back(std::move(s));
+      }
     // The external programs of (c) read the GLSL from disk.
     if (!shadowc::driver::writeArtifact(dir, *r.artifact).empty()) return 1;
 
     std::vector<double> in, full, ext;
     for (int i = 0; i < n; ++i) {
       auto t0 = Clock::now();
-      for (const auto& [stem, glsl] : shaders) {
-        const auto res = shadowc::compileGlsl(glsl, shadowc::ShaderStage::Compute, stem, {}, {true, true});
+      for (const Shader& s : shaders) {
+        const auto res = shadowc::compileGlsl(s.glsl, shadowc::ShaderStage::Compute, s.stem, {}, {true, true, s.keep});
         if (!res.ok) return 1;
       }
       auto t1 = Clock::now();
       const auto again = shadowc::driver::compileFile(file.string());
       auto t2 = Clock::now();
       if (!again.ok) return 1;
-      for (const auto& [stem, glsl] : shaders) {
-        const std::string base = (dir / stem).string();
+      for (const Shader& s : shaders) {
+        const std::string base = (dir / s.stem).string();
         const std::string cmd = "glslangValidator -S comp -V --target-env vulkan1.2 -o " + base + ".ext.spv " + base +
                                 ".glsl >/dev/null && spirv-opt --target-env=vulkan1.2" + recipe + " " + base +
                                 ".ext.spv -o " + base + ".opt.spv && spirv-val --target-env vulkan1.2 " + base +

@@ -7,8 +7,11 @@
 // Every filter is compiled by the driver and run through the run harness (warm-up, then the
 // median of the timed runs); the copies are a hand-built manifest run the same way.
 //
-// Usage: pass_bench [runs] [sample-substring] [map sizes, comma separated]
-//   defaults: 5 runs after 2 warm-ups, every sample, 512,1024,2048; screen 256^2, two_planes.
+// Usage: pass_bench [runs] [sample-substrings, '|'-separated] [map sizes, comma separated] [filter folders, comma
+// separated]
+//   defaults: 5 runs after 2 warm-ups, every sample, 512,1024,2048, samples/filters; screen
+//   256^2, two_planes. bench/filters holds inputs that are no samples (the mixed scheme, the
+//   unfused moments + SAT reference).
 // Run with MESA_SHADER_CACHE_DISABLE=true so that runs are comparable.
 #include <fmt/core.h>
 
@@ -163,6 +166,14 @@ std::vector<uint32_t> parseSizes(const std::string& s) {
   return out;
 }
 
+// `only` is one substring or several separated by '|' ("sat|minmax"); empty matches all.
+bool matches(const std::string& name, const std::string& only) {
+  std::stringstream in(only);
+  for (std::string item; std::getline(in, item, '|');)
+    if (name.find(item) != std::string::npos) return true;
+  return only.empty();
+}
+
 std::string repeat(const std::string& s, size_t n) {
   std::string out;
   for (size_t i = 0; i < n; ++i) out += s;
@@ -175,17 +186,22 @@ int main(int argc, char** argv) try {
   const int runs = argc > 1 ? std::max(1, std::atoi(argv[1])) : 5;
   const std::string only = argc > 2 ? argv[2] : "";
   const std::vector<uint32_t> sizes = parseSizes(argc > 3 ? argv[3] : "512,1024,2048");
+  std::vector<fs::path> folders;
+  std::stringstream folderList(argc > 4 ? argv[4] : "");
+  for (std::string item; std::getline(folderList, item, ',');) folders.emplace_back(item);
+  if (folders.empty()) folders.push_back(fs::path(SHADOWC_SOURCE_DIR) / "samples" / "filters");
 
   std::vector<driver::Artifact> filters;
-  for (const auto& e : fs::directory_iterator(fs::path(SHADOWC_SOURCE_DIR) / "samples" / "filters"))
-    if (e.path().extension() == ".shadow" && e.path().stem().string().find(only) != std::string::npos) {
-      driver::Result r = driver::compileFile(e.path().string());
-      if (!r.artifact) {
-        fmt::print(stderr, "skipping {}:\n{}", e.path().filename().string(), r.log);
-        continue;
+  for (const fs::path& folder : folders)
+    for (const auto& e : fs::directory_iterator(folder))
+      if (e.path().extension() == ".shadow" && matches(e.path().stem().string(), only)) {
+        driver::Result r = driver::compileFile(e.path().string());
+        if (!r.artifact) {
+          fmt::print(stderr, "skipping {}:\n{}", e.path().filename().string(), r.log);
+          continue;
+        }
+        filters.push_back(std::move(*r.artifact));
       }
-      filters.push_back(std::move(*r.artifact));
-    }
   std::sort(filters.begin(), filters.end(), [](const auto& a, const auto& b) { return a.spec.name < b.spec.name; });
   const CompiledPasses copies = copyPasses();
 

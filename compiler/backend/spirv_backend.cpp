@@ -9,6 +9,8 @@
 #include <spirv-tools/libspirv.hpp>
 #include <spirv-tools/optimizer.hpp>
 
+#include "backend/dont_inline.h"
+
 namespace shadowc {
 namespace {
 
@@ -139,6 +141,7 @@ SpirvResult compileGlsl(std::string_view source, ShaderStage stage, const std::s
     }
   }
   if (options.optimize) {
+    markDontInline(r.words, options.keepCalls);
     spvtools::Optimizer opt(kTargetEnv);
     std::string optLog;
     opt.SetMessageConsumer([&](spv_message_level_t level, const char* s, const spv_position_t& p, const char* m) {

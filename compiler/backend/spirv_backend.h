@@ -24,8 +24,11 @@ struct SpirvResult {
 };
 
 struct BackendOptions {
-  bool optimize = true;      // run the -O recipe; false = -O0 (no spirv-opt at all)
-  bool validate = true;      // spirv-val after every stage of the recipe
+  bool optimize = true;  // run the -O recipe; false = -O0 (no spirv-opt at all)
+  bool validate = true;  // spirv-val after every stage of the recipe
+  // GLSL functions the recipe keeps as calls (dont_inline.h): an unrolled quadtree's node
+  // callbacks, whose inlined copies made the recipe take seconds.
+  std::vector<std::string> keepCalls;
 };
 
 // Runs the glslang preprocessor only: folds #define constants and strips #if'd-out code so

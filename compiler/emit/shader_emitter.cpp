@@ -1,6 +1,8 @@
 #include "emit/shader_emitter.h"
 
+#include <algorithm>
 #include <regex>
+#include <variant>
 
 #include "emit/glsl_tidy.h"
 #include "emit/specialization_block.h"
@@ -37,6 +39,17 @@ std::string specializeTemplate(const std::string& templatePath, const Specializa
   return insertSpecialization(templ, specialization);
 }
 
+// An unrolled quadtree calls its node test once per node (85 call sites at height 3): kept as
+// calls, the -O recipe takes 0.1 s of CPU instead of 2.6 s (issue 10; backend/dont_inline.h).
+std::vector<std::string> keptCalls(const Specialization& specialization) {
+  std::vector<std::string> out;
+  for (const Table& t : specialization.tables)
+    if (const auto* u = std::get_if<UnrolledQuadtree>(&t))
+      for (const std::string& f : {u->visit, u->leaf})
+        if (std::find(out.begin(), out.end(), f) == out.end()) out.push_back(f);
+  return out;
+}
+
 EmittedShader emitComputeShader(const std::string& templatePath, const Specialization& specialization,
                                 const ShaderEmitOptions& options) {
   EmittedShader out;
@@ -60,6 +73,7 @@ EmittedShader emitComputeShader(const std::string& templatePath, const Specializ
   // Compile the emitted text itself, so the .spv is exactly the .glsl that ships.
   BackendOptions bo;
   bo.optimize = options.optimize;
+  bo.keepCalls = keptCalls(specialization);
   SpirvResult spv = compileGlsl(out.glsl, ShaderStage::Compute, name, templateIncludes(), bo);
   out.log += spv.log;
   if (!spv.ok) return out;

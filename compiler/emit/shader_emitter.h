@@ -30,6 +30,10 @@ struct ShaderEmitOptions {
 EmittedShader emitComputeShader(const std::string& templatePath, const Specialization& specialization,
                                 const ShaderEmitOptions& options);
 
+// The functions a shader's -O compile keeps as calls (BackendOptions::keepCalls): an unrolled
+// quadtree's node callbacks (backend/dont_inline.h). bench/compile_bench uses the same list.
+std::vector<std::string> keptCalls(const Specialization& specialization);
+
 // The specialized (not yet preprocessed) text: template with the block at the marker.
 // Sets `error` (and returns "") when the template is unknown or has no marker.
 std::string specializeTemplate(const std::string& templatePath, const Specialization& specialization,

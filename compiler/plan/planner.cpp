@@ -67,21 +67,38 @@ class Planner {
     return v;
   }
 
-  void planMoments() {
-    const int layers = std::max(1, spec_.moments.layers);
-    const bool mips = spec_.prefilter.mips;
-    const int levels = mips ? pyramidLevels(spec_) : 1;
-    addImage({"moments", momentsFormat(spec_), kMap, levels, layers, ImageRole::Internal, true});
-    const bool lloyd = layers > 1 && spec_.moments.split == SplitPlacement::Lloyd;
-    if (lloyd) planLloyd(layers);
+  // Fused prefilter (issue 10): when only the summed-area table reads the moments (no blur, no
+  // mips), the SAT row scan warps the light depth itself (sat_rows.comp SHADOWC_SAT_FROM_DEPTH)
+  // and neither a moments pass nor a moments image exists: two full-map passes instead of three.
+  bool fusedSat() const {
+    const bool blur = spec_.prefilter.blur != BlurKind::None && spec_.prefilter.blurRadius > 0;
+    return spec_.storage.sat != SatKind::None && !blur && !spec_.prefilter.mips;
+  }
 
-    // moments: depth -> warped (per-layer remapped) moments.
+  // moments: depth -> warped (per-layer remapped) moments; the same values fold into the fused
+  // SAT row pass.
+  Specialization layerMomentsValues(bool lloyd) const {
     Specialization d = momentsValues();
     d.add("SHADOWC_SPLITS", fp32(spec_.moments.splits));  // layers+1 after normalization
     d.add("SHADOWC_OVERLAP", fp32(spec_.moments.overlap));
     d.add("SHADOWC_SPLITS_FROM_IMAGE", lloyd);
+    return d;
+  }
+
+  void planMoments() {
+    const int layers = std::max(1, spec_.moments.layers);
+    const bool mips = spec_.prefilter.mips;
+    const int levels = mips ? pyramidLevels(spec_) : 1;
+    const bool lloyd = layers > 1 && spec_.moments.split == SplitPlacement::Lloyd;
+    if (lloyd) planLloyd(layers);
+    if (fusedSat()) {
+      planSat(layers, lloyd);
+      return;
+    }
+    addImage({"moments", momentsFormat(spec_), kMap, levels, layers, ImageRole::Internal, true});
+
     Pass& m = addPass("moments", "moments", {8, 8, 1}, {kMap, DispatchMode::Texels},
-                      {"passes/moments.comp", "moments", std::move(d)});
+                      {"passes/moments.comp", "moments", layerMomentsValues(lloyd)});
     m.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "moments", Access::StorageWrite, 0}};
     if (lloyd) m.bindings.push_back({2, "splits", Access::Sampled, -1});
 
@@ -108,7 +125,7 @@ class Planner {
       p.bindings = {{0, "moments", Access::StorageRead, k - 1}, {1, "moments", Access::StorageWrite, k}};
     }
 
-    if (spec_.storage.sat != SatKind::None) planSat(layers);
+    if (spec_.storage.sat != SatKind::None) planSat(layers, false);
   }
 
   // Lloyd split placement (lauritzen2008 sec. 4.1) runs before the moments pass, which reads
@@ -131,35 +148,61 @@ class Planner {
     p.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "splits", Access::StorageWrite, 0}};
   }
 
-  void planSat(int layers) {
+  // The SAT as a row scan then a column scan (sat_rows.comp, sat_columns.comp). Fused: the row
+  // scan reads the light depth (and the Lloyd splits) instead of the moments image.
+  void planSat(int layers, bool lloyd) {
+    const bool fused = fusedSat();
     addImage({"sat", satFormat(spec_), kMap, 1, layers, ImageRole::Internal, false});
-    Specialization d = momentsValues();
+    Specialization d = fused ? layerMomentsValues(lloyd) : momentsValues();
     d.add("SHADOWC_SAT_KIND", satKindCode(spec_.storage.sat));
     d.add("SHADOWC_SAT_FORMAT", satFormat(spec_));
+    d.add("SHADOWC_SAT_FROM_DEPTH", fused);
     Pass& rows =
         addPass("sat_rows", "sat", {64, 1, 1}, {kMap, DispatchMode::Rows}, {"passes/sat_rows.comp", "sat_rows", d});
-    rows.bindings = {{0, "moments", Access::StorageRead, 0}, {1, "sat", Access::StorageWrite, 0}};
+    if (fused) {
+      rows.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "sat", Access::StorageWrite, 0}};
+      if (lloyd) rows.bindings.push_back({2, "splits", Access::Sampled, -1});
+    } else {
+      rows.bindings = {{0, "moments", Access::StorageRead, 0}, {1, "sat", Access::StorageWrite, 0}};
+    }
+    Specialization c;
+    c.add("SHADOWC_LAYERS", static_cast<long long>(layers));
+    c.add("SHADOWC_SAT_KIND", satKindCode(spec_.storage.sat));
+    c.add("SHADOWC_SAT_FORMAT", satFormat(spec_));
     Pass& cols = addPass("sat_columns", "sat", {64, 1, 1}, {kMap, DispatchMode::Columns},
-                         {"passes/sat_columns.comp", "sat_columns", d});
+                         {"passes/sat_columns.comp", "sat_columns", std::move(c)});
     cols.bindings = {{0, "sat", Access::StorageReadWrite, 0}};
   }
 
-  static Specialization minmaxValues(bool level0) {
+  static Specialization minmaxValues(bool level0, bool two) {
     Specialization v;
     v.add("SHADOWC_MINMAX_LEVEL0", level0);
+    v.add("SHADOWC_MINMAX_TWO", two);
     return v;
   }
 
+  // The pyramid in about levels/2 dispatches (minmax.comp): the first reads the light depth and
+  // writes levels 0, 1 and 2; each further one reads level k and writes k+1 and k+2 (only k+1
+  // when it is the top).
   void planMinMax() {
-    const int levels = pyramidLevels(spec_);
+    const int levels = pyramidLevels(spec_);  // >= 2
     addImage({"minmax", ImageFormat::RG32F, kMap, levels, 1, ImageRole::Internal, false});
-    Pass& p0 = addPass("minmax0", "minmax", {8, 8, 1}, {kMap, DispatchMode::Texels},
-                       {"passes/minmax.comp", "minmax0", minmaxValues(true)});
-    p0.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "minmax", Access::StorageWrite, 0}};
-    for (int k = 1; k < levels; ++k) {
-      Pass& p = addPass("minmax" + std::to_string(k), "minmax", {8, 8, 1}, {{SizeDomain::Map, k}, DispatchMode::Texels},
-                        {"passes/minmax.comp", "minmax", minmaxValues(false)});
-      p.bindings = {{0, "minmax", Access::StorageRead, k - 1}, {1, "minmax", Access::StorageWrite, k}};
+    // `from` is the level read (level 0 is the light depth itself), `top` the last one written.
+    for (int from = 0; from < levels - 1;) {
+      const int top = std::min(from + 2, levels - 1);
+      const bool level0 = from == 0, two = top - from == 2;
+      std::string name = "minmax";
+      for (int k = level0 ? 0 : from + 1; k <= top; ++k) name += std::to_string(k);
+      const std::string stem = std::string("minmax") + (level0 ? "_depth" : "") + (two ? "_two" : "");
+      Pass& p = addPass(name, "minmax", {8, 8, 1}, {{SizeDomain::Map, top}, DispatchMode::Texels},
+                        {"passes/minmax.comp", stem, minmaxValues(level0, two)});
+      if (level0)
+        p.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "minmax", Access::StorageWrite, top}};
+      else
+        p.bindings = {{0, "minmax", Access::StorageRead, from}, {1, "minmax", Access::StorageWrite, top}};
+      if (level0) p.bindings.push_back({2, "minmax", Access::StorageWrite, 0});
+      if (two) p.bindings.push_back({3, "minmax", Access::StorageWrite, top - 1});
+      from = top;
     }
   }
 
@@ -175,7 +218,9 @@ class Planner {
       const auto& ims = graph_.manifest.images;
       return std::any_of(ims.begin(), ims.end(), [&](const ImageDesc& d) { return d.name == name; });
     };
-    if (has("moments")) s.bindings.push_back({5, "moments", Access::Sampled, -1});
+    // With a SAT the lookup reads only the table (resources.glsl): the moments are not bound even
+    // where a blur pass still makes them.
+    if (has("moments") && !has("sat")) s.bindings.push_back({5, "moments", Access::Sampled, -1});
     if (has("sat")) s.bindings.push_back({6, "sat", Access::Sampled, -1});
     if (has("minmax")) s.bindings.push_back({7, "minmax", Access::Sampled, -1});
     if (has("splits")) s.bindings.push_back({8, "splits", Access::Sampled, -1});

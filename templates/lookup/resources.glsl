@@ -10,8 +10,10 @@
 // read with texelFetch only.
 layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_DEPTH) uniform sampler2D shadowc_shadowDepth;
 
-#if SHADOWC_HAS_MOMENTS
+#if SHADOWC_HAS_MOMENTS && !SHADOWC_HAS_SAT
 // Warped moments, one array layer per depth layer; linear filtering (+ mips when prefiltered).
+// With a SAT the lookup reads only the table (moments_filter.glsl), and the fused prefilter
+// makes no moments image at all (plan/planner.cpp), so none is declared.
 layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_MOMENTS) uniform sampler2DArray shadowc_moments;
 #endif
 

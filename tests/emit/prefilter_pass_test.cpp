@@ -32,7 +32,13 @@ std::vector<FilterSpec> variants() {
     s.blocker.kind = BlockerKind::None;
     s.kernel.subdivision = Subdivision::None;
     v.push_back(s);
+    s.moments.split = SplitPlacement::Lloyd;  // the fused row scan reads the Lloyd splits
+    v.push_back(s);
   }
+  FilterSpec blurredSat = test::vssmInt32Spec();  // unfused: the rows read the blurred moments
+  blurredSat.prefilter.blur = BlurKind::Box;
+  blurredSat.prefilter.blurRadius = 1;
+  v.push_back(blurredSat);
   return v;
 }
 
@@ -83,6 +89,11 @@ TEST(PrefilterPasses, UnusedWarpsAndSatKindsAreAbsentFromTheEmittedGlsl) {
       EXPECT_NE(sh.glsl.find("uimage2DArray"), std::string::npos);
       EXPECT_NE(sh.glsl.find("65536.0"), std::string::npos) << "16.16 fixed point encode";
       EXPECT_EQ(sh.glsl.find("- 0.5"), std::string::npos) << "centered fp32 path must be gone";
+      // Fused (issue 10): the scan warps the depth itself; the linear warp only, no splits image.
+      EXPECT_NE(sh.glsl.find("shadowDepth"), std::string::npos);
+      EXPECT_EQ(sh.glsl.find("momentsIn"), std::string::npos);
+      EXPECT_EQ(sh.glsl.find("exp("), std::string::npos) << "linear warp must not carry the EVSM code";
+      EXPECT_EQ(sh.glsl.find("splitsImage"), std::string::npos);
     }
   }
 }

@@ -1,11 +1,13 @@
-// Closed-form checks of the summed-area tables built by the real compiled passes (moments ->
-// sat_rows -> sat_columns of a sample filter) on a crafted depth map, against the double
-// precision references of runtime/reference/cpu_filters.h. Each check has a sibling proving
+// Closed-form checks of the summed-area tables built by the real compiled passes (the fused
+// sat_rows, which warps the light depth itself, -> sat_columns of a sample filter) on a crafted
+// depth map, against the double precision references of runtime/reference/cpu_filters.h fed
+// with the fp32 linear moments (d, d*d) of the same depths. Each check has a sibling proving
 // that the comparison can fail. Validation on, zero messages (VulkanTest).
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdint>
+#include <string>
 #include <vector>
 
 #include "gpu/accuracy_harness.h"
@@ -36,17 +38,34 @@ std::vector<float> craftedDepth(uint32_t n) {
 }
 
 struct SatRun {
-  std::vector<float> moments;  // interleaved rg, as downloaded
+  std::vector<float> moments;  // interleaved rg: the fp32 linear warp (d, d*d) the SAT sums
   rt::HostImage sat;
 };
+
+// The linear warp in fp32, as moments_warp.glsl computes it (one correctly rounded product).
+std::vector<float> linearMoments(const std::vector<float>& depth) {
+  std::vector<float> m(depth.size() * 2);
+  for (size_t i = 0; i < depth.size(); ++i) {
+    m[2 * i] = depth[i];
+    m[2 * i + 1] = depth[i] * depth[i];
+  }
+  return m;
+}
 
 SatRun runSatPasses(rt::VulkanContext& ctx, const CompiledFilter& cf) {
   const auto g = craftGBuffer({}, 8, 8);
   rt::RunOptions options;
-  options.downloads = {"moments", "sat"};
-  rt::RunOutputs out = rt::runPasses(
-      ctx, cf.passes, craftedInputs(kMap, 8, 8, identityFrame(kMap, 8, 8, 0.5f), craftedDepth(kMap), g), options);
-  return {out.images.at("moments").floats(), std::move(out.images.at("sat"))};
+  options.downloads = {"sat"};
+  const std::vector<float> depth = craftedDepth(kMap);
+  rt::RunOutputs out =
+      rt::runPasses(ctx, cf.passes, craftedInputs(kMap, 8, 8, identityFrame(kMap, 8, 8, 0.5f), depth, g), options);
+  return {linearMoments(depth), std::move(out.images.at("sat"))};
+}
+
+bool hasPass(const CompiledFilter& cf, const std::string& name) {
+  for (const Pass& p : cf.passes.manifest.passes)
+    if (p.name == name) return true;
+  return false;
 }
 
 // Counts texels whose channels differ from the reference; names the first.
@@ -74,12 +93,21 @@ TEST_F(ClosedFormSatTest, Int32SatEqualsCpuIntegerSumsExactly) {
   const rt::cpu::ImageView moments{run.moments.data(), kMap, kMap, 2};
   const rt::cpu::SatU32 ref = rt::cpu::buildSatU32(moments);
   EXPECT_TRUE(satEquals(run.sat, ref));
-  // The moments themselves are the warp (d, d^2) of the crafted map (fp32, within an ulp).
-  const std::vector<float> depth = craftedDepth(kMap);
-  for (size_t i = 0; i < depth.size(); i += 997) {
-    EXPECT_EQ(run.moments[i * 2], depth[i]);
-    EXPECT_NEAR(run.moments[i * 2 + 1], double(depth[i]) * depth[i], 1e-7);
-  }
+  // The table was built by the fused prefilter: no moments pass ran (issue 10).
+  EXPECT_FALSE(hasPass(*cf, "moments"));
+  EXPECT_TRUE(hasPass(*cf, "sat_rows"));
+}
+
+// Sibling: the moments rounded to 2^-11 steps before the sum (what storing them in a coarser
+// image between two passes would do) give a different table: the exact comparison notices.
+TEST_F(ClosedFormSatTest, Int32SatComparisonCatchesMomentsRoundedBeforeTheSum) {
+  const CompiledFilter* cf = compileFilterCached("vssm_int32_sat", sampleSource("vssm_int32_sat"));
+  ASSERT_NE(cf, nullptr);
+  const SatRun run = runSatPasses(context(), *cf);
+  std::vector<float> rounded = run.moments;
+  for (float& v : rounded) v = float(std::ldexp(std::nearbyint(std::ldexp(double(v), 11)), -11));
+  const rt::cpu::SatU32 wrong = rt::cpu::buildSatU32(rt::cpu::ImageView{rounded.data(), kMap, kMap, 2});
+  EXPECT_FALSE(satEquals(run.sat, wrong));
 }
 
 // Sibling: a reference that truncates instead of rounding to nearest must be caught.

@@ -43,32 +43,78 @@ TEST(Planner, DepthPcfPlansOnlyTheShadePass) {
   EXPECT_EQ(s.dispatch.size.domain, SizeDomain::Screen);
 }
 
-TEST(Planner, VssmInt32PlansMomentsSatMinMaxShadeInOrder) {
+// The fused prefilter (issue 10): the SAT row scan reads the light depth, no moments pass or
+// image exists; the min-max pyramid takes one dispatch per two levels.
+TEST(Planner, VssmInt32PlansFusedSatMinMaxShadeInOrder) {
   const FilterSpec spec = test::vssmInt32Spec();
   const PassGraph g = planPasses(spec);
-  std::vector<std::string> expected = {"moments", "sat_rows", "sat_columns", "minmax0"};
-  for (int k = 1; k < pyramidLevels(spec); ++k) expected.push_back("minmax" + std::to_string(k));
-  expected.push_back("shade");
-  EXPECT_EQ(passNames(g), expected);
+  ASSERT_EQ(pyramidLevels(spec), 7);  // default max 64 texels: ceil(log2 64) + 1
+  EXPECT_EQ(passNames(g),
+            (std::vector<std::string>{"sat_rows", "sat_columns", "minmax012", "minmax34", "minmax56", "shade"}));
+  EXPECT_EQ(image(g, "moments"), nullptr);
   ASSERT_NE(image(g, "sat"), nullptr);
   EXPECT_EQ(image(g, "sat")->format, ImageFormat::RG32UI);
-  EXPECT_EQ(image(g, "moments")->format, ImageFormat::RG32F);
   EXPECT_EQ(image(g, "minmax")->format, ImageFormat::RG32F);
   EXPECT_EQ(image(g, "minmax")->mipLevels, pyramidLevels(spec));
-  EXPECT_EQ(pass(g, "sat_rows").dispatch.mode, DispatchMode::Rows);
+  const Pass& rows = pass(g, "sat_rows");
+  EXPECT_EQ(rows.dispatch.mode, DispatchMode::Rows);
+  ASSERT_EQ(rows.bindings.size(), 2u);
+  EXPECT_EQ(rows.bindings[0].image, "shadow_depth");
+  EXPECT_EQ(rows.bindings[0].access, Access::Sampled);
   EXPECT_EQ(pass(g, "sat_columns").dispatch.mode, DispatchMode::Columns);
   EXPECT_EQ(pass(g, "sat_columns").bindings.at(0).access, Access::StorageReadWrite);
-  // minmaxK reads level K-1 and writes level K, dispatched over the level's extent.
-  const Pass& m3 = pass(g, "minmax3");
-  EXPECT_EQ(m3.bindings.at(0).level, 2);
-  EXPECT_EQ(m3.bindings.at(1).level, 3);
-  EXPECT_EQ(m3.dispatch.size.shift, 3);
-  // Shade binds the fixed table: 5 moments, 6 sat, 7 minmax.
+  // The first min-max dispatch reads the depth, writes level 0 (binding 2), 1 (binding 3, the
+  // middle) and 2 (binding 1), over level 2's extent; the next reads 2 and writes 3 and 4.
+  const Pass& m012 = pass(g, "minmax012");
+  EXPECT_EQ(m012.bindings.at(0).image, "shadow_depth");
+  EXPECT_EQ(m012.bindings.at(1).level, 2);
+  EXPECT_EQ(m012.bindings.at(2).level, 0);
+  EXPECT_EQ(m012.bindings.at(3).level, 1);
+  EXPECT_EQ(m012.dispatch.size.shift, 2);
+  const Pass& m34 = pass(g, "minmax34");
+  EXPECT_EQ(m34.bindings.size(), 3u);
+  EXPECT_EQ(m34.bindings.at(0).level, 2);
+  EXPECT_EQ(m34.bindings.at(1).level, 4);
+  EXPECT_EQ(m34.bindings.at(2).binding, 3u);
+  EXPECT_EQ(m34.bindings.at(2).level, 3);
+  EXPECT_EQ(m34.dispatch.size.shift, 4);
+  EXPECT_EQ(m34.spirv, pass(g, "minmax56").spirv);  // the same shader for every middle pair
+  // Shade binds 6 sat and 7 minmax; with a SAT the moments are never bound.
   const Pass& s = pass(g, "shade");
-  ASSERT_EQ(s.bindings.size(), 8u);
-  EXPECT_EQ(s.bindings[5].image, "moments");
-  EXPECT_EQ(s.bindings[6].image, "sat");
-  EXPECT_EQ(s.bindings[7].image, "minmax");
+  ASSERT_EQ(s.bindings.size(), 7u);
+  EXPECT_EQ(s.bindings[5].image, "sat");
+  EXPECT_EQ(s.bindings[5].binding, 6u);
+  EXPECT_EQ(s.bindings[6].image, "minmax");
+}
+
+// A pyramid of an odd level count ends with a single-level dispatch; of two levels, one
+// dispatch from the depth.
+TEST(Planner, MinMaxPyramidEndsWithASingleLevelWhenTheCountIsEven) {
+  FilterSpec spec = test::vssmInt32Spec();
+  spec.kernel.maxTexels = 128;  // 8 levels: 0-2, 3-4, 5-6, 7
+  std::vector<std::string> minmax;
+  for (const Pass& p : planPasses(spec).manifest.passes)
+    if (p.kind == "minmax") minmax.push_back(p.name);
+  EXPECT_EQ(minmax, (std::vector<std::string>{"minmax012", "minmax34", "minmax56", "minmax7"}));
+  EXPECT_EQ(pass(planPasses(spec), "minmax7").bindings.size(), 2u);
+  spec.kernel.maxTexels = 2;
+  minmax.clear();
+  for (const Pass& p : planPasses(spec).manifest.passes)
+    if (p.kind == "minmax") minmax.push_back(p.name);
+  EXPECT_EQ(minmax, (std::vector<std::string>{"minmax01"}));
+}
+
+// A blur between the moments and the SAT keeps the moments pass and image; the SAT rows read
+// them (unfused), and the shade still binds only the table.
+TEST(Planner, SatAfterABlurReadsTheMomentsImage) {
+  FilterSpec spec = test::vssmInt32Spec();
+  spec.prefilter.blur = BlurKind::Box;
+  spec.prefilter.blurRadius = 2;
+  const PassGraph g = planPasses(spec);
+  EXPECT_EQ(g.manifest.passes.at(0).name, "moments");
+  ASSERT_NE(image(g, "moments"), nullptr);
+  EXPECT_EQ(pass(g, "sat_rows").bindings.at(0).image, "moments");
+  for (const Binding& b : pass(g, "shade").bindings) EXPECT_NE(b.image, "moments");
 }
 
 TEST(Planner, FpSatKindsUseFloatFormats) {

@@ -50,7 +50,7 @@ float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb){
 #line 1 "lookup/resources.glsl"
 #line 11
 layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
-#line 15
+#line 17
 layout(set = 0, binding = 5)uniform sampler2DArray shadowc_moments;
 #line 16 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/kernel.glsl"

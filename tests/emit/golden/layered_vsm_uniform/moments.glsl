@@ -1,5 +1,10 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
+#line 15
+layout(local_size_x = 8, local_size_y = 8, local_size_z = 1)in;
+layout(set = 0, binding = 0)uniform sampler2D shadowDepth;
+layout(set = 0, binding = 1, rg32f)writeonly uniform image2DArray momentsOut;
+#line 1 "passes/layer_moments.glsl"
 #line 1 "passes/moments_warp.glsl"
 #line 29
 vec4 shadowc_warpMoments(float d){
@@ -9,26 +14,22 @@ vec4 shadowc_warpMoments(float d){
 }
 #line 49
 float shadowc_layerRemap(float d, float p, float q){ return clamp((d - p)/ max(q - p, 1e-6), 0.0, 1.0);}
-#line 26 "templates/passes/moments.comp"
+#line 24 "passes/layer_moments.glsl"
 
-layout(local_size_x = 8, local_size_y = 8, local_size_z = 1)in;
-layout(set = 0, binding = 0)uniform sampler2D shadowDepth;
-layout(set = 0, binding = 1, rg32f)writeonly uniform image2DArray momentsOut;
-#line 34
+vec4 shadowc_layerMoments(float d, int layer){
+#line 33
+  const float splits[4 + 1]= float[](0.0, 0.25, 0.5, 0.75, 1.0);
+  const float lo = splits[layer], hi = splits[layer + 1];
+
+  return shadowc_warpMoments(shadowc_layerRemap(d, lo - 0.0199999996, hi + 0.0199999996));
+
+}
+#line 22 "templates/passes/moments.comp"
+
 void main(){
   const ivec2 size = textureSize(shadowDepth, 0);
   const ivec2 p = ivec2(gl_GlobalInvocationID . xy);
   if(any(greaterThanEqual(p, size)))return;
   const float d = texelFetch(shadowDepth, p, 0). r;
-#line 43
-  const float splits[4 + 1]= float[](0.0, 0.25, 0.5, 0.75, 1.0);
-
-  for(int i = 0;i < 4;++ i){
-#line 50
-    const float lo = splits[i], hi = splits[i + 1];
-
-    const float t = shadowc_layerRemap(d, lo - 0.0199999996, hi + 0.0199999996);
-    imageStore(momentsOut, ivec3(p, i), shadowc_warpMoments(t));
-  }
-
+  for(int i = 0;i < 4;++ i)imageStore(momentsOut, ivec3(p, i), shadowc_layerMoments(d, i));
 }

@@ -50,11 +50,9 @@ float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb){
 #line 1 "lookup/resources.glsl"
 #line 11
 layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
-#line 15
-layout(set = 0, binding = 5)uniform sampler2DArray shadowc_moments;
-#line 21
+#line 23
 layout(set = 0, binding = 6)uniform usampler2DArray shadowc_summedArea;
-#line 29
+#line 31
 layout(set = 0, binding = 7)uniform sampler2D shadowc_minMaxPyramid;
 #line 16 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/kernel.glsl"
