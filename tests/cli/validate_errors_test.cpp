@@ -89,9 +89,27 @@ TEST(ValidateErrors, SiblingAGoodRunSucceedsAndReports) {
 TEST(ValidateErrors, SiblingACompiledManifestRunsToo) {
   const auto dir = test::freshTempDir("good-manifest");
   ASSERT_EQ(test::runShadowc("compile " + kFilter + " -O0 -o " + dir.string()).code, 0);
-  const test::CliResult r = test::runShadowc("validate " + (dir / "manifest.json").string() + " --scene two_planes" + kSmall);
+  const test::CliResult r =
+      test::runShadowc("validate " + (dir / "manifest.json").string() + " --scene two_planes" + kSmall);
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.out.find("filter   pcf_grid5x5"), std::string::npos) << r.out;
+}
+
+// Light types (issue 14): a spot filter on a sun scene is one clear error naming the fix, and the
+// same filter compiled for a sun validates on it (the sibling).
+TEST(ValidateErrors, SpotFilterOnSunScene) {
+  expectOneError(test::runShadowc("validate " + kFilter + " --scene sun_two_planes" + kSmall),
+                 "compile the filter with 'light sun'");
+}
+
+TEST(ValidateErrors, SiblingASunFilterValidatesOnASunScene) {
+  const auto file = writeTemp("sun-filter", "pcf_sun.shadow",
+                              "filter pcf_sun {\n    light sun\n    depth\n    kernel fixed(5)\n"
+                              "    sampling grid(5x5)\n}\n");
+  const test::CliResult r = test::runShadowc("validate " + file.string() + " --scene sun_two_planes" + kSmall);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rmse"), std::string::npos) << r.out;
+  EXPECT_EQ(errorLines(r.err), 0) << r.err;
 }
 
 }  // namespace
