@@ -12,6 +12,7 @@
 #include "runtime/vulkan/vulkan_context.h"
 #include "support/test_support.h"
 #include "sweep/results_io.h"
+#include "sweep/sweep_spec.h"
 
 namespace shadowc {
 namespace {
@@ -163,6 +164,27 @@ TEST(PlanConfirmation, TriesTheNextCandidateWhenTheFirstMeasuresSlow) {
   auto honest = cacheWith(1.0);
   const planning::PlanResult q = planning::planOnScenes(context(), r, model, scenes, &honest);
   EXPECT_EQ(q.chosen.name, allowed[0].second);
+}
+
+// `--write-sweep` writes a description `shadowc sweep` loads; `--from-sweep` without results is
+// one message and exit 1.
+TEST(CalibrationSweepCli, WritesTheSweepAndRefusesAMissingOne) {
+  const auto dir = test::freshTempDir("plan_write_sweep");
+  const auto file = dir / "calibration.json";
+  const test::CliResult w = test::runShadowc("plan --write-sweep '" + file.string() +
+                                             "' --scene two_planes --screen 64 --map 256 --samples 4 --runs 1");
+  ASSERT_EQ(w.code, 0) << w.err;
+  const sweep::SweepSpec spec = sweep::loadSweepSpec(file);
+  EXPECT_EQ(spec.filters.size(), planning::candidateCatalog().size() + 5);
+  ASSERT_EQ(spec.scenes.size(), 1u);
+  EXPECT_EQ(spec.scenes[0].scene, "two_planes");
+  EXPECT_EQ(spec.screens, std::vector<uint32_t>{64});
+  EXPECT_EQ(spec.runs, 1);
+  const test::CliResult r = test::runShadowc("plan --calibrate '" + (dir / "m.json").string() + "' --from-sweep '" +
+                                             (dir / "none").string() + "'");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("results.json"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dir / "m.json"));
 }
 
 }  // namespace
