@@ -1,11 +1,15 @@
 // `shadowc plan --scene S [--scene S2 ...] --max-rmse E [--budget-ms T] -o FILE.shadow`: the
 // cheapest filter description that meets the bound on every scene, confirmed against the ground
 // truth (planning/planner.h, docs/planning.md). Also regenerates the model
-// (`--calibrate samples/plan/model.json`) and the docs table (`--report FILE.md`).
+// (`--calibrate samples/plan/model.json`) and the docs table (`--report docs/planning.md`) from
+// one measured sweep (planning/calibration_sweep.h): run in process into --sweep-dir, or read
+// from --from-sweep DIR; `--write-sweep FILE.json` writes that sweep's description.
 #include <fmt/core.h>
 
 #include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <memory>
 #include <optional>
 #include <stdexcept>
@@ -14,9 +18,11 @@
 
 #include "cli/commands.h"
 #include "planning/calibration.h"
+#include "planning/calibration_sweep.h"
 #include "planning/planner.h"
 #include "runtime/images/atomic_file.h"
 #include "runtime/vulkan/vulkan_context.h"
+#include "sweep/sweep_row.h"
 
 namespace shadowc::cli {
 namespace {
@@ -36,7 +42,7 @@ CommandRunner registerPlan(CLI::App& app) {
   struct Options {
     std::vector<std::string> scenes;
     double maxRmse = -1, budgetMs = -1;
-    std::string out, model, calibrate, report, device;
+    std::string out, model, calibrate, report, device, sweepDir = "plan-sweep", fromSweep, writeSweep;
     uint32_t screen = 256, map = 1024;
     int samples = 16, runs = 5, warmup = 2;
   };
@@ -49,6 +55,11 @@ CommandRunner registerPlan(CLI::App& app) {
     if (o->budgetMs >= 0) s += fmt::format(" --budget-ms {:g}", o->budgetMs);
     if (!o->calibrate.empty()) s += " --calibrate " + o->calibrate;
     if (!o->report.empty()) s += " --report " + o->report;
+    if (!o->writeSweep.empty()) s += " --write-sweep " + o->writeSweep;
+    if (!o->fromSweep.empty())
+      s += " --from-sweep " + o->fromSweep;
+    else if (!o->calibrate.empty() || !o->report.empty())
+      s += " --sweep-dir " + o->sweepDir;
     s += fmt::format(" --screen {} --map {} --samples {} --runs {} --warmup {}", o->screen, o->map, o->samples, o->runs,
                      o->warmup);
     if (!o->out.empty()) s += " -o " + o->out;
@@ -66,8 +77,19 @@ CommandRunner registerPlan(CLI::App& app) {
   sub->add_option("--warmup", o->warmup, "Untimed warm-up runs per confirmation")->capture_default_str();
   sub->add_option("--model", o->model, "Plan model JSON (default: the built-in samples/plan/model.json)");
   sub->add_option("--calibrate", o->calibrate,
-                  "Measure every candidate on the scenes (default: all built-ins), write the model here");
-  sub->add_option("--report", o->report, "Write the docs/planning.md table (plan vs everything on vs exhaustive) here");
+                  "Fit the model from the calibration sweep (every candidate on the scenes, default: all built-ins) "
+                  "and write it here");
+  sub->add_option("--report", o->report,
+                  "Write the table (plan vs everything on vs exhaustive) from the calibration sweep: between the "
+                  "report markers of this file (docs/planning.md), or as the whole file");
+  sub->add_option("--sweep-dir", o->sweepDir,
+                  "Where --calibrate/--report run the calibration sweep (finished rows are cached: a rerun measures "
+                  "only what changed)")
+      ->capture_default_str();
+  sub->add_option("--from-sweep", o->fromSweep,
+                  "Read the calibration sweep's rows from DIR/results.json instead of running it");
+  sub->add_option("--write-sweep", o->writeSweep,
+                  "Write the calibration sweep's description (for `shadowc sweep FILE -o DIR`) and exit");
   sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");
   return [o, commandLine]() -> int {
     if (o->screen == 0 || o->map == 0 || o->samples < 1 || o->runs < 1 || o->warmup < 0)
@@ -75,27 +97,40 @@ CommandRunner registerPlan(CLI::App& app) {
     for (const std::string& s : o->scenes) (void)rt::loadScene(s);  // an unknown scene is one message, before any work
     auto log = [](const std::string& line) { fmt::print(stderr, "shadowc: {}\n", line); };
     const std::string command = commandLine();
+    planning::CalibrationRequest c;
+    c.scenes = o->scenes;
+    c.screen = o->screen;
+    c.map = o->map;
+    c.samples = o->samples;
+    c.runs = o->runs;
+    c.warmup = o->warmup;
+    c.command = command;
+    c.log = log;
+    if (!o->writeSweep.empty()) {
+      rt::writeFileAtomically(o->writeSweep, planning::calibrationSweepJson(c));
+      fmt::print("wrote the calibration sweep to {}\n", o->writeSweep);
+      return 0;
+    }
     if (!o->calibrate.empty() || !o->report.empty()) {
+      const sweep::Results rows = o->fromSweep.empty() ? planning::calibrationRows(c, o->sweepDir, o->device)
+                                                       : planning::sweepRows(o->fromSweep);
       rt::VulkanContext ctx(rt::VulkanOptions{o->device, false});
-      planning::CalibrationRequest c;
-      c.scenes = o->scenes;
-      c.screen = o->screen;
-      c.map = o->map;
-      c.samples = o->samples;
-      c.runs = o->runs;
-      c.warmup = o->warmup;
-      c.command = command;
-      c.log = log;
+      // Calibrating starts from the rules' defaults (plan_model.h); a report alone reads the model.
+      planning::PlanModel m = o->calibrate.empty() ? planning::loadModel(o->model) : planning::PlanModel{};
+      const planning::SweepData data =
+          planning::joinSweep(ctx, rows, o->fromSweep.empty() ? o->sweepDir : o->fromSweep, m.rules);
+      for (const std::string& w : data.warnings) log("warning: " + w);
       if (!o->calibrate.empty()) {
-        const planning::PlanModel m = planning::calibrateModel(ctx, c);
+        m = planning::modelFromSweep(data, command);
         rt::writeFileAtomically(o->calibrate, planning::modelToJson(m));
-        fmt::print("wrote the plan model ({} variants) to {}\n", m.variants.size(), o->calibrate);
+        fmt::print("wrote the plan model ({} variants, {} scenes) to {}\n", m.variants.size(), data.scenes.size(),
+                   o->calibrate);
       }
       if (!o->report.empty()) {
-        const planning::PlanModel m = planning::loadModel(o->model);
-        const auto rows = planning::planReport(ctx, c, m);
-        const std::string table = planning::formatReport(rows, c);
-        rt::writeFileAtomically(o->report, table);
+        const std::string table = planning::formatReport(planning::planReport(ctx, data, m), data, command);
+        std::string doc;
+        if (std::ifstream in{o->report}) doc.assign(std::istreambuf_iterator<char>(in), {});
+        rt::writeFileAtomically(o->report, planning::placeReport(doc, table));
         fmt::print("{}", table);
       }
       return 0;

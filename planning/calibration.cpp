@@ -4,69 +4,47 @@
 
 #include <algorithm>
 
-#include "driver/driver.h"
-#include "runtime/scene/scene.h"
-#include "runtime/vulkan/vulkan_context.h"
+#include "planning/calibration_sweep.h"
+#include "sweep/outputs.h"
+#include "sweep/results_io.h"
+#include "sweep/sweep_run.h"
 
 namespace shadowc::planning {
 namespace {
 
-std::vector<std::string> scenesOf(const CalibrationRequest& r) {
-  return r.scenes.empty() ? rt::builtinSceneNames() : r.scenes;
-}
-
-// The split of a run's GPU time the cost model needs: passes over the map vs the shade pass.
-CalibrationRun calibrationRun(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& one, const PlanModel& rules,
-                              int warmup, int runs) {
-  DescribeOptions d;
-  d.slopeBias = useSlopeBias(one.stats, rules.rules);
-  d.contactEpsilon = one.stats[0].contactEpsilon;
-  d.sun = one.prepared[0]->scene.light.type == rt::LightType::Sun;  // each scene is calibrated on its own
-  const driver::Result r = driver::compileSpec(candidateSpec(c, d));
-  if (!r.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile:\n" + r.log);
-  rt::RunOptions options;
-  options.warmup = warmup;
-  options.runs = runs;
-  const rt::SceneRunResult run = rt::runOnScene(ctx, r.artifact->passes(), *one.prepared[0], options);
-  CalibrationRun cr;
-  cr.scene = one.stats[0].scene;
-  cr.rmse = run.metrics.rmse;
-  cr.totalMs = run.outputs.timing->totalMs;
-  for (const rt::PassTiming& p : run.outputs.timing->passes) (p.kind == "shade" ? cr.shadeMs : cr.mapMs) += p.medianMs;
-  cr.terms = errorTerms(one.stats[0]);
-  return cr;
-}
+constexpr const char* kBegin = "<!-- plan report: begin (generated; do not edit by hand) -->";
+constexpr const char* kEnd = "<!-- plan report: end -->";
 
 }  // namespace
 
-PlanModel calibrateModel(rt::VulkanContext& ctx, const CalibrationRequest& request) {
-  PlanModel model;
-  model.generatedBy = request.command;
-  model.screen = request.screen;
-  model.map = request.map;
-  model.samples = request.samples;
-  std::map<std::string, std::vector<CalibrationRun>> runs;
-  for (const std::string& scene : scenesOf(request)) {
-    if (request.log) request.log("calibrating on " + scene);
-    const PlanScenes one = preparePlanScenes(ctx, {scene}, request.screen, request.map, request.samples, 0.01);
-    for (const Candidate& c : candidateCatalog())
-      runs[c.name].push_back(calibrationRun(ctx, c, one, model, request.warmup, request.runs));
-  }
-  for (auto& [name, r] : runs) model.variants[name] = fitVariant(std::move(r), request.map, request.screen);
-  return model;
+sweep::Results calibrationRows(const CalibrationRequest& request, const std::filesystem::path& sweepDir,
+                               const std::string& device) {
+  sweep::SweepOptions o;
+  o.outDir = sweepDir;
+  o.device = device;
+  o.jobs = 1;  // compiling in one thread leaves the other cores to whoever shares the machine
+  o.tty = 0;
+  const sweep::SweepOutcome outcome = sweep::runSweep(calibrationSweep(request), o, stderr);
+  for (const sweep::Skipped& s : outcome.results.skipped)
+    if (request.log) request.log(fmt::format("calibration sweep skipped {}: {}", s.variant, s.message));
+  const std::string warning = sweep::writeOutputs(sweepDir, outcome.results);  // results.json, report.html
+  if (!warning.empty() && request.log) request.log("calibration sweep: warning: " + warning);
+  return outcome.results;
 }
 
-std::vector<ReportRow> planReport(rt::VulkanContext& ctx, const CalibrationRequest& request, const PlanModel& model) {
+sweep::Results sweepRows(const std::filesystem::path& fromSweep) {
+  return sweep::readResultsJson(fromSweep / "results.json");
+}
+
+std::vector<ReportRow> planReport(rt::VulkanContext& ctx, const SweepData& data, const PlanModel& model) {
   std::vector<ReportRow> rows;
-  for (const std::string& scene : scenesOf(request)) {
-    if (request.log) request.log("report: " + scene);
-    const PlanScenes one = preparePlanScenes(ctx, {scene}, request.screen, request.map, request.samples, 0.01);
-    std::map<std::string, Measurement> cache;
+  for (const SweepScene& sc : data.scenes) {
+    ReportRow row;
+    row.scene = sc.label;
     std::vector<Measurement> all;
     for (const Candidate& c : candidateCatalog())
-      all.push_back(measureCandidate(ctx, c, one, model, request.warmup, request.runs, &cache));
-    ReportRow row;
-    row.scene = scene;
+      if (auto it = sc.byName.find(c.name); it != sc.byName.end()) all.push_back(it->second);
+    if (all.empty()) continue;
     const auto best = std::min_element(
         all.begin(), all.end(), [](const Measurement& a, const Measurement& b) { return a.worstRmse < b.worstRmse; });
     row.best = best->worstRmse;
@@ -77,16 +55,22 @@ std::vector<ReportRow> planReport(rt::VulkanContext& ctx, const CalibrationReque
       if (m.variant == everythingOn().name) row.everything = m;
       if (m.worstRmse <= row.bound && (row.fastest.variant.empty() || m.worstMs < row.fastest.worstMs)) row.fastest = m;
     }
+    // The planner's confirmations read the sweep's rows (keyed as measureCandidate keys them).
+    std::map<std::string, Measurement> cache;
+    const bool slope = useSlopeBias(sc.scenes.stats, model.rules);
+    for (const Measurement& m : all) cache[measurementKey(m.variant, sc.scenes, slope)] = m;
     PlanRequest pr;
-    pr.scenes = {scene};
+    pr.scenes = {sc.label};
     pr.maxRmse = row.bound;
-    pr.screen = request.screen;
-    pr.map = request.map;
-    pr.samples = request.samples;
-    pr.warmup = request.warmup;
-    pr.runs = request.runs;
+    pr.screen = data.screen;
+    pr.map = data.map;
+    pr.samples = data.samples;
+    pr.warmup = data.warmup;
+    pr.runs = data.runs;
     try {
-      row.plan = planOnScenes(ctx, pr, model, one, &cache).measured;
+      const PlanResult p = planOnScenes(ctx, pr, model, sc.scenes, &cache);
+      row.plan = p.measured;
+      row.confirmed = p.tried.size();
     } catch (const PlanError& e) {
       row.planError = e.what();
     }
@@ -95,31 +79,48 @@ std::vector<ReportRow> planReport(rt::VulkanContext& ctx, const CalibrationReque
   return rows;
 }
 
-std::string formatReport(const std::vector<ReportRow>& rows, const CalibrationRequest& request) {
+std::string formatReport(const std::vector<ReportRow>& rows, const SweepData& data, const std::string& command) {
   std::string out = fmt::format(
       "Generated by `{}`: screen {}^2, map {}^2, reference {}x{} light samples, median of {} timed runs after {} "
       "warm-up, lavapipe. Bound = max(1.1 x best, best + 0.005) where best is the lowest RMSE any variant reached "
-      "on the scene; \"fastest within bound\" is the exhaustive answer over all {} candidates.\n\n",
-      request.command, request.screen, request.map, request.samples, request.samples, request.runs, request.warmup,
-      candidateCatalog().size());
+      "on the scene; \"fastest within bound\" is the exhaustive answer over all {} candidates; \"confirmed\" is "
+      "how many candidates the planner measured before it settled.\n\n",
+      command, data.screen, data.map, data.samples, data.samples, data.runs, data.warmup, candidateCatalog().size());
   out +=
-      "| scene | bound | plan | plan ms | plan RMSE | everything on ms | everything on RMSE | fastest within bound "
-      "(exhaustive) | its ms | its RMSE | everything / plan | plan / fastest |\n";
-  out += "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+      "| scene | bound | plan | plan ms | plan RMSE | confirmed | everything on ms | everything on RMSE | fastest "
+      "within bound (exhaustive) | its ms | its RMSE | everything / plan | plan / fastest |\n";
+  out += "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+  size_t twice = 0, within = 0, met = 0;
   for (const ReportRow& r : rows) {
     if (!r.planError.empty()) {
-      out += fmt::format("| {} | {:.4f} | plan failed: {} | | | {:.2f} | {:.4f} | {} | {:.2f} | {:.4f} | | |\n",
+      out += fmt::format("| {} | {:.4f} | plan failed: {} | | | | {:.2f} | {:.4f} | {} | {:.2f} | {:.4f} | | |\n",
                          r.scene, r.bound, r.planError, r.everything.worstMs, r.everything.worstRmse, r.fastest.variant,
                          r.fastest.worstMs, r.fastest.worstRmse);
       continue;
     }
+    const double speedup = r.everything.worstMs / std::max(1e-9, r.plan.worstMs);
+    const double ratio = r.plan.worstMs / std::max(1e-9, r.fastest.worstMs);
+    twice += speedup >= 2;
+    within += ratio <= 1.1;
+    met += r.plan.worstRmse <= r.bound;
     out += fmt::format(
-        "| {} | {:.4f} | {} | {:.2f} | {:.4f} | {:.2f} | {:.4f} | {} | {:.2f} | {:.4f} | {:.2f}x | {:.2f}x |\n",
-        r.scene, r.bound, r.plan.variant, r.plan.worstMs, r.plan.worstRmse, r.everything.worstMs,
-        r.everything.worstRmse, r.fastest.variant, r.fastest.worstMs, r.fastest.worstRmse,
-        r.everything.worstMs / std::max(1e-9, r.plan.worstMs), r.plan.worstMs / std::max(1e-9, r.fastest.worstMs));
+        "| {} | {:.4f} | {} | {:.2f} | {:.4f} | {} | {:.2f} | {:.4f} | {} | {:.2f} | {:.4f} | {:.2f}x | {:.2f}x |\n",
+        r.scene, r.bound, r.plan.variant, r.plan.worstMs, r.plan.worstRmse, r.confirmed, r.everything.worstMs,
+        r.everything.worstRmse, r.fastest.variant, r.fastest.worstMs, r.fastest.worstRmse, speedup, ratio);
   }
+  out += fmt::format(
+      "\nOn {} scenes: the plan met its bound on {}, was at least 2x faster than everything on on {}, and within "
+      "1.1x of the exhaustive fastest on {}.\n",
+      rows.size(), met, twice, within);
+  for (const std::string& w : data.warnings) out += "\nNote: " + w + "\n";
   return out;
+}
+
+std::string placeReport(const std::string& document, const std::string& text) {
+  const size_t b = document.find(kBegin), e = document.find(kEnd);
+  if (b == std::string::npos || e == std::string::npos || e < b) return text;
+  const size_t start = b + std::string(kBegin).size();
+  return document.substr(0, start) + "\n" + text + document.substr(e);
 }
 
 }  // namespace shadowc::planning

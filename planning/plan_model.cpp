@@ -77,15 +77,15 @@ std::vector<double> ridge(const std::vector<std::vector<double>>& X, const std::
 
 }  // namespace
 
-VariantModel fitVariant(std::vector<CalibrationRun> runs, uint32_t mapSize, uint32_t screenSize) {
+VariantModel fitVariant(std::vector<CalibrationRun> runs) {
   VariantModel m;
   std::vector<double> perTexel, perPixel;
   std::vector<std::vector<double>> X;
   std::vector<double> y;
   m.rmseFloor = runs.empty() ? 0 : 1.0;
   for (const CalibrationRun& r : runs) {
-    perTexel.push_back(r.mapMs / (double(mapSize) * mapSize * 1e-6));
-    perPixel.push_back(r.shadeMs / (double(screenSize) * screenSize * 1e-6));
+    perTexel.push_back(r.mapMs / (double(r.map) * r.map * 1e-6));
+    perPixel.push_back(r.shadeMs / (double(r.screen) * r.screen * 1e-6));
     X.push_back(r.terms);
     y.push_back(r.rmse);
     m.rmseFloor = std::min(m.rmseFloor, r.rmse);
@@ -116,6 +116,7 @@ PlanModel parseModel(const std::string& text, const std::string& label) {
     m.rules.quadtreeTexels = r.at("quadtree_texels");
     m.rules.slopeDegrees = r.at("slope_degrees");
     m.rules.confirmMargin = r.at("confirm_margin");
+    m.rules.confirmTimeSlack = r.at("confirm_time_slack");
     m.generatedBy = j.at("generated_by");
     m.screen = j.at("calibration").at("screen");
     m.map = j.at("calibration").at("map");
@@ -129,6 +130,8 @@ PlanModel parseModel(const std::string& text, const std::string& label) {
       for (const auto& run : v.at("runs")) {
         CalibrationRun c;
         c.scene = run.at("scene");
+        c.screen = run.at("screen");
+        c.map = run.at("map");
         c.rmse = run.at("rmse");
         c.totalMs = run.at("total_ms");
         c.mapMs = run.at("map_ms");
@@ -159,14 +162,14 @@ PlanModel loadModel(const std::string& path) {
 
 std::string modelToJson(const PlanModel& m) {
   nlohmann::ordered_json j;
-  j["format_version"] = 1;
+  j["format_version"] = 2;  // 2: runs carry their screen and map
   j["generated_by"] = m.generatedBy;
   j["calibration"] = {{"screen", m.screen}, {"map", m.map}, {"samples", m.samples}};
   j["rules"] = {{"penumbra_texels", m.rules.penumbraTexels},   {"penumbra_quantile", m.rules.penumbraQuantile},
                 {"contact_fraction", m.rules.contactFraction}, {"multi_depth_fraction", m.rules.multiDepthFraction},
                 {"uniform_fraction", m.rules.uniformFraction}, {"sat_texels", m.rules.satTexels},
                 {"quadtree_texels", m.rules.quadtreeTexels},   {"slope_degrees", m.rules.slopeDegrees},
-                {"confirm_margin", m.rules.confirmMargin}};
+                {"confirm_margin", m.rules.confirmMargin},     {"confirm_time_slack", m.rules.confirmTimeSlack}};
   j["error_terms"] = kErrorTerms;
   nlohmann::ordered_json vs = nlohmann::ordered_json::object();
   for (const auto& [name, v] : m.variants) {
@@ -176,6 +179,8 @@ std::string modelToJson(const PlanModel& m) {
     auto& runs = jv["runs"] = nlohmann::ordered_json::array();
     for (const CalibrationRun& r : v.runs)
       runs.push_back({{"scene", r.scene},
+                      {"screen", r.screen},
+                      {"map", r.map},
                       {"rmse", r.rmse},
                       {"total_ms", r.totalMs},
                       {"map_ms", r.mapMs},

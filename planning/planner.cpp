@@ -75,13 +75,17 @@ bool sunScenes(const PlanScenes& scenes) {
   return suns != 0;
 }
 
+std::string measurementKey(const std::string& variant, const PlanScenes& scenes, bool slopeBias) {
+  return variant + "|" + sceneList(scenes) + "|" + (slopeBias ? "slope" : "constant");
+}
+
 Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
                              const PlanModel& model, int warmup, int runs, std::map<std::string, Measurement>* cache) {
   DescribeOptions d;
   d.slopeBias = useSlopeBias(scenes.stats, model.rules);
   d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
   d.sun = sunScenes(scenes);
-  const std::string key = c.name + "|" + sceneList(scenes) + "|" + (d.slopeBias ? "slope" : "constant");
+  const std::string key = measurementKey(c.name, scenes, d.slopeBias);
   if (cache) {
     auto it = cache->find(key);
     if (it != cache->end()) return it->second;
@@ -194,7 +198,13 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
   const Option* chosen = nullptr;
   const bool budgetOnly = !request.maxRmse;
   for (const Option& o : options) {
-    if (chosen && !budgetOnly) break;
+    // With a bound: after a hit, every other allowed candidate (predicted within the bound or
+    // not: the error model can be wrong both ways) is confirmed when the model says it may be
+    // faster than the best measured (rules.confirmTimeSlack); the fastest within the bound wins.
+    if (chosen && !budgetOnly) {
+      if (stage(o) > 1) break;
+      if (o.ms > result.measured.worstMs * model.rules.confirmTimeSlack) continue;
+    }
     if (chosen && budgetOnly && stage(o) > 0) break;  // with only a budget, compare the predicted-ok ones
     if (request.log)
       request.log(fmt::format("confirming {} (predicted {:.4f} rmse, {:.2f} ms)", o.c->name, o.rmse, o.ms));
@@ -203,7 +213,8 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
     const bool meets =
         (!request.maxRmse || m.worstRmse <= *request.maxRmse) && (!request.budgetMs || m.worstMs <= *request.budgetMs);
     if (!meets) continue;
-    if (!chosen || m.worstRmse < result.measured.worstRmse) {
+    const bool better = budgetOnly ? m.worstRmse < result.measured.worstRmse : m.worstMs < result.measured.worstMs;
+    if (!chosen || better) {
       chosen = &o;
       result.measured = m;
     }

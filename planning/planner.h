@@ -58,7 +58,8 @@ PlanScenes preparePlanScenes(rt::VulkanContext& ctx, const std::vector<std::stri
                              uint32_t map, int samples, double contactEpsilon);
 
 // Compiles a candidate (described for these scenes) and runs it on each of them. Results are
-// cached per (variant, scenes) in `cache` when given.
+// cached per measurementKey in `cache` when given (the report fills it from sweep rows).
+std::string measurementKey(const std::string& variant, const PlanScenes& scenes, bool slopeBias);
 Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
                              const PlanModel& model, int warmup, int runs,
                              std::map<std::string, Measurement>* cache = nullptr);
