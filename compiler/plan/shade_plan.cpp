@@ -139,6 +139,13 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   // The early out must cover the blur footprint too (shadowc_lookup.glsl, shadowc_influenceRect).
   if (s.earlyOutMinMax && moments && s.prefilter.blur != BlurKind::None && s.prefilter.blurRadius > 0)
     defInt("SHADOWC_EARLY_OUT_GROW", s.prefilter.blurRadius);
+  // Uniform walks that subdivide only a non-planar root (Algorithm 1 L11 / L17; vssm.glsl).
+  if (s.blocker.subdivision == Subdivision::Uniform && s.blocker.uniformNonPlanarOnly)
+    defBool("SHADOWC_BLOCKER_SUBDIVIDE_NONPLANAR", true);
+  if (s.kernel.subdivision == Subdivision::Uniform && s.kernel.uniformNonPlanarOnly)
+    defBool("SHADOWC_KERNEL_SUBDIVIDE_NONPLANAR", true);
+  // SAT box corners (sat.glsl): fractional = exact integral under the continuous box.
+  if (s.storage.sat != SatKind::None && s.storage.fractionalCorners) defBool("SHADOWC_SAT_FRACTIONAL", true);
   // Stability-suite demonstration only (FilterSpec::naiveUnguarded; validation/).
   if (s.naiveUnguarded) defBool("SHADOWC_NAIVE_UNGUARDED", true);
 

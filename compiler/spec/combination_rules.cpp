@@ -7,6 +7,7 @@
 #include <fmt/args.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "spec/precision.h"
 
@@ -53,6 +54,14 @@ struct Facts {
   bool splitCountOk() const { return static_cast<int>(r.explicitSplits.size()) == s.moments.layers + 1; }
   bool vssm() const { return moments && s.blocker.kind == BlockerKind::Moments; }
   bool msm() const { return moments && s.moments.warp == Warp::Msm; }
+  // Exponential moments summed in an fp32 SAT (issue 9 defect 3): cancellation, E0420.
+  bool expFp32Sat() const {
+    return exponential && (s.storage.sat == SatKind::Fp32Centered || s.storage.sat == SatKind::Fp32Naive);
+  }
+  double largestExponent() const {
+    const MomentsSpec& m = s.moments;
+    return m.warp == Warp::Evsm4 ? std::max(m.positiveExponent, m.negativeExponent) : m.positiveExponent;
+  }
   bool msmFp32Sat() const {
     return msm() && (s.storage.sat == SatKind::Fp32Centered || s.storage.sat == SatKind::Fp32Naive);
   }
@@ -164,6 +173,11 @@ const Rule kRules[] = {
        return f.moments && f.int32Sat && k.size == KernelSize::Penumbra && k.maxTexels * k.maxTexels > kInt32SatMaxBoxTexels;
      },
      [](const Facts& f, Args& a) { push(a, f.s.kernel.maxTexels, f.s.kernel.maxTexels * f.s.kernel.maxTexels); }},
+    {DiagId::expWarpFp32Sat, Caret::Storage, [](const Facts& f) { return f.expFp32Sat(); },
+     [](const Facts& f, Args& a) {
+       const double w = static_cast<double>(f.s.mapSize);
+       push(a, warpName(f.s.moments.warp), f.s.mapSize, w * w, std::exp(f.largestExponent()));
+     }},
     {DiagId::naiveFp32Sat, Caret::Storage,
      [](const Facts& f) { return f.moments && f.s.storage.sat == SatKind::Fp32Naive; }},
     {DiagId::blurOnSat, Caret::Blur,
@@ -199,14 +213,17 @@ const Rule kRules[] = {
     {DiagId::unrolledQuadtreeSlow, Caret::Kernel, [](const Facts& f) { return f.unrolledHeight() == 3; }},
     // ---- exponential warps: exp(c) must stay representable (precision.h) -----------------------
     {DiagId::exponentOverflow, Caret::Exponent,
-     [](const Facts& f) { return f.exponential && f.r.exponent && f.s.moments.positiveExponent > f.limit.maxExponent; },
+     [](const Facts& f) {
+       // An fp32 SAT of exponential moments is E0420 at any exponent: one diagnostic, not two.
+       return f.exponential && !f.expFp32Sat() && f.r.exponent && f.s.moments.positiveExponent > f.limit.maxExponent;
+     },
      [](const Facts& f, Args& a) {
        push(a, f.s.moments.warp == Warp::Evsm4 ? "positive" : "warp", f.r.exponent->text, f.limit.storageName, "c",
             f.limit.maxExponent, f.limit.reason);
      }},
     {DiagId::exponentOverflow, Caret::NegativeExponent,
      [](const Facts& f) {
-       return f.exponential && f.s.moments.warp == Warp::Evsm4 && f.r.negativeExponent &&
+       return f.exponential && !f.expFp32Sat() && f.s.moments.warp == Warp::Evsm4 && f.r.negativeExponent &&
               f.s.moments.negativeExponent > f.limit.maxExponent;
      },
      [](const Facts& f, Args& a) {
@@ -231,10 +248,22 @@ const Rule kRules[] = {
     {DiagId::contactNeedsMomentBlocker, Caret::Contact,
      [](const Facts& f) { return f.s.contact.enabled && f.s.blocker.kind != BlockerKind::Moments; }},
     {DiagId::noEffect, Caret::Fallback,
-     [](const Facts& f) { return f.s.fallback.pcf && f.s.kernel.subdivision == Subdivision::None; },
+     [](const Facts& f) { return f.r.fallback && f.s.fallback.pcf && !f.vssm(); },
      [](const Facts&, Args& a) {
-       push(a, "fallback", "PCF replaces non-planar leaves of a uniform or quadtree kernel (vssm sec. 5.2)");
+       push(a, "fallback", "PCF replaces the non-planar sub-kernels of the VSSM walks (vssm sec. 5.1-5.2), which need 'blocker moments'");
      }},
+    {DiagId::noEffect, Caret::Kernel,
+     [](const Facts& f) {
+       const KernelSpec& k = f.s.kernel;
+       return k.subdivision == Subdivision::Uniform && k.uniformNonPlanarOnly && k.uniformN == 1;
+     },
+     [](const Facts&, Args& a) { push(a, "subdivide", "a 1 x 1 uniform kernel is the root box, never subdivided"); }},
+    {DiagId::noEffect, Caret::Blocker,
+     [](const Facts& f) {
+       const BlockerSpec& b = f.s.blocker;
+       return f.vssm() && b.subdivision == Subdivision::Uniform && b.uniformNonPlanarOnly && b.uniformM == 1;
+     },
+     [](const Facts&, Args& a) { push(a, "subdivide", "a 1 x 1 uniform blocker walk is the root box, never subdivided"); }},
     // ---- layers (lauritzen2008 sec. 3-4) ----------------------------------------------------------
     {DiagId::splitCount, Caret::Split, [](const Facts& f) { return f.explicitSplits() && !f.splitCountOk(); },
      [](const Facts& f, Args& a) { push(a, f.s.moments.layers + 1, f.r.explicitSplits.size()); }},

@@ -163,6 +163,8 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
   // Only msm has a moment bias; other warps' manifests stay byte-identical.
   if (m.warp == Warp::Msm) j["moments"]["moment_bias"] = m.momentBias;
   j["storage"] = J{{"format", name(s.storage.format)}, {"sat", name(s.storage.sat)}};
+  // Written only when set, so the manifests of texel-corner filters stay byte-identical.
+  if (s.storage.fractionalCorners) j["storage"]["corners"] = "bilinear";
   j["prefilter"] =
       J{{"blur", name(s.prefilter.blur)}, {"blur_radius", s.prefilter.blurRadius}, {"mips", s.prefilter.mips}};
   const BlockerSpec& b = s.blocker;
@@ -174,6 +176,10 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
       J{{"size", name(k.size)},      {"fixed_texels", k.fixedTexels},       {"subdivision", name(k.subdivision)},
         {"uniform_n", k.uniformN},   {"quadtree_height", k.quadtreeHeight}, {"traversal", name(k.traversal)},
         {"max_texels", k.maxTexels}, {"lit_threshold", k.litThreshold}};
+  // Written only when set (Algorithm 1's subdivision of non-planar kernels only), so other
+  // manifests stay byte-identical.
+  if (b.uniformNonPlanarOnly) j["blocker"]["subdivide"] = "nonplanar";
+  if (k.uniformNonPlanarOnly) j["kernel"]["subdivide"] = "nonplanar";
   j["sampling"] = J{{"pattern", name(s.sampling.pattern)},
                     {"grid_n", s.sampling.gridN},
                     {"taps", s.sampling.taps},

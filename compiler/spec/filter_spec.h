@@ -78,6 +78,10 @@ enum class SatKind {
 struct StorageSpec {
   StorageFormat format = StorageFormat::Fp32;
   SatKind sat = SatKind::None;
+  // SAT box corners: whole texels (the box snaps to the texel grid, so visibility is constant
+  // per texel) or fractional, the exact integral of the texels under the continuous box read as
+  // a bilinear interpolation of the SAT (issue 9 defect 6; sat.glsl). `sat(K, corners: C)`.
+  bool fractionalCorners = false;
 };
 
 // ---- prefilter ---------------------------------------------------------------------------
@@ -103,6 +107,9 @@ struct BlockerSpec {
   Subdivision subdivision = Subdivision::Uniform;  // Moments: paper's mixed scheme uses m = 5
   int uniformM = 5;
   int quadtreeHeight = 3;
+  // Uniform: subdivide only a non-planar search region (z_avg >= d, Algorithm 1 L11-L15), or
+  // always (m^2 box reads). `uniform(m, subdivide: always|nonplanar)`; issue 9 defect 8.
+  bool uniformNonPlanarOnly = false;
 };
 
 // ---- kernel ------------------------------------------------------------------------------
@@ -116,8 +123,9 @@ struct KernelSpec {
   KernelSize size = KernelSize::Penumbra;
   int fixedTexels = 3;  // Fixed: kernel width in texels (odd)
   Subdivision subdivision = Subdivision::None;
-  int uniformN = 8;        // Uniform n x n (vssm sec. 5.2)
-  int quadtreeHeight = 3;  // Quadtree of height H (vssm sec. 5.3)
+  int uniformN = 8;                   // Uniform n x n (vssm sec. 5.2)
+  bool uniformNonPlanarOnly = false;  // Uniform: subdivide only a non-planar w_p (Algorithm 1 L17-L20)
+  int quadtreeHeight = 3;             // Quadtree of height H (vssm sec. 5.3)
   QuadtreeTraversal traversal = QuadtreeTraversal::Table;
   double maxTexels = 64;       // clamp of penumbra-driven kernel width
   double litThreshold = 1e-4;  // Algorithm 2 "Threshold" (vssm sec. 6.5)

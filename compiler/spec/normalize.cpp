@@ -56,6 +56,15 @@ void normalize(FilterSpec& spec, const SettingsRead& given) {
     for (int i = 0; i <= m.layers; ++i) m.splits.push_back(static_cast<double>(i) / m.layers);
   }
   if (spec.prefilter.blur == BlurKind::None) spec.prefilter.blurRadius = 0;
+  // Non-planar sub-kernels (z_avg >= d) of subdivided VSSM walks: PCF with 2x2 samples, the
+  // paper's choice for its small sub-kernels (vssm-yang2010 sec. 5.1 option 2), unless `fallback
+  // none` asks for option 1 (lit). Without any subdivision the "sub-kernel" is the whole search
+  // or penumbra box, where 2x2 samples measured worse than lit (docs/accuracy.md, issue 9 defect
+  // 4), so the default stays none there.
+  const bool subdivided =
+      spec.kernel.subdivision != Subdivision::None || spec.blocker.subdivision != Subdivision::None;
+  if (!given.fallback && moments && spec.blocker.kind == BlockerKind::Moments && subdivided)
+    spec.fallback = FallbackSpec{true, 2};
 }
 
 }  // namespace shadowc::spec

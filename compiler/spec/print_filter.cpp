@@ -84,15 +84,21 @@ std::string moments(const MomentsSpec& m) {
 std::string storage(const StorageSpec& s) {
   const char* formats[] = {"fp32", "fp16", "unorm16"};
   const char* format = formats[static_cast<int>(s.format)];
+  // `corners` only when fractional: the printed text of texel-corner filters stays as it was.
+  auto sat = [&](const char* kind) {
+    std::vector<std::string> args = {std::string("kind: ") + kind, std::string("format: ") + format};
+    if (s.fractionalCorners) args.push_back("corners: bilinear");
+    return call("sat", args);
+  };
   switch (s.sat) {
     case SatKind::None:
       return format;
     case SatKind::Int32:
-      return call("sat", {"kind: int32", std::string("format: ") + format});
+      return sat("int32");
     case SatKind::Fp32Centered:
-      return call("sat", {"kind: fp32_centered", std::string("format: ") + format});
+      return sat("fp32_centered");
     case SatKind::Fp32Naive:
-      return call("sat", {"kind: fp32", std::string("format: ") + format});
+      return sat("fp32");
   }
   return format;
 }
@@ -107,6 +113,8 @@ std::string subdivision(const BlockerSpec& b) {
     case Subdivision::None:
       return "none";
     case Subdivision::Uniform:
+      // `subdivide` only when not the default, so printed filters stay as they were.
+      if (b.uniformNonPlanarOnly) return call("uniform", {fmt::format("m: {}", b.uniformM), "subdivide: nonplanar"});
       return call("uniform", {fmt::format("m: {}", b.uniformM)});
     case Subdivision::Quadtree:
       return call("quadtree", {fmt::format("height: {}", b.quadtreeHeight)});
@@ -132,6 +140,7 @@ std::string kernel(const KernelSpec& k) {
   std::vector<std::string> args;
   const char* form = "penumbra";
   if (k.subdivision == Subdivision::Uniform) form = "uniform", args.push_back(fmt::format("n: {}", k.uniformN));
+  if (k.subdivision == Subdivision::Uniform && k.uniformNonPlanarOnly) args.push_back("subdivide: nonplanar");
   if (k.subdivision == Subdivision::Quadtree) {
     form = "quadtree";
     args.push_back(fmt::format("height: {}", k.quadtreeHeight));

@@ -252,7 +252,7 @@ class SettingsReader : ValueReader {
       if (bind(v, {}, b)) out_.spec.storage = StorageSpec{formats[*idx], SatKind::None};
       return;
     }
-    if (!bind(v, {{"kind", true}, {"format", false}}, b)) return;
+    if (!bind(v, {{"kind", true}, {"format", false}, {"corners", false}}, b)) return;
     const Value* kind = get(b, "kind");
     if (!kind) {
       at(v, DiagId::missingArgument, "sat", "kind (int32, fp32_centered or fp32)");
@@ -264,6 +264,8 @@ class SettingsReader : ValueReader {
     out_.spec.storage = StorageSpec{StorageFormat::Fp32, kinds[*k]};
     if (const Value* f = get(b, "format"))
       if (auto fi = choice(f, arg("format", v), {"fp32", "fp16", "unorm16"})) out_.spec.storage.format = formats[*fi];
+    if (const Value* c = get(b, "corners"))
+      if (auto ci = choice(c, arg("corners", v), {"texel", "bilinear"})) out_.spec.storage.fractionalCorners = *ci == 1;
   }
 
   void readBlur(const Value& v, const std::string& what) {
@@ -311,9 +313,12 @@ class SettingsReader : ValueReader {
         if (bind(*sub, {}, sb)) bl.subdivision = Subdivision::None;
       } else if (*si == 0) {
         bl.subdivision = Subdivision::Uniform;
-        if (bind(*sub, {{"m", true}}, sb))
+        if (bind(*sub, {{"m", true}, {"subdivide", false}}, sb)) {
           if (const Value* x = get(sb, "m"))
             if (auto n = integer(x, arg("m", *sub), 1, 16)) bl.uniformM = *n;
+          if (const Value* x = get(sb, "subdivide"))
+            if (auto c = choice(x, arg("subdivide", *sub), {"always", "nonplanar"})) bl.uniformNonPlanarOnly = *c == 1;
+        }
       } else {
         bl.subdivision = Subdivision::Quadtree;
         if (bind(*sub, {{"height", true}}, sb))
@@ -330,7 +335,7 @@ class SettingsReader : ValueReader {
     Bound b;
     std::vector<Param> params;
     if (*idx == 0) params = {{"size", true}};
-    if (*idx == 2) params = {{"n", true}};
+    if (*idx == 2) params = {{"n", true}, {"subdivide", false}};
     if (*idx == 3) params = {{"height", true}, {"traversal", false}};
     if (*idx != 0) params.insert(params.end(), {{"max", false}, {"lit_threshold", false}});
     bind(v, params, b);
@@ -353,6 +358,8 @@ class SettingsReader : ValueReader {
     k.subdivision = *idx == 1 ? Subdivision::None : *idx == 2 ? Subdivision::Uniform : Subdivision::Quadtree;
     if (const Value* x = get(b, "n"))
       if (auto n = integer(x, arg("n", v), 1, 32)) k.uniformN = *n;
+    if (const Value* x = get(b, "subdivide"))
+      if (auto c = choice(x, arg("subdivide", v), {"always", "nonplanar"})) k.uniformNonPlanarOnly = *c == 1;
     if (const Value* x = get(b, "height"))
       if (auto n = quadtreeHeight(x, arg("height", v))) k.quadtreeHeight = *n;
     if (const Value* x = get(b, "traversal"))

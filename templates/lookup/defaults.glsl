@@ -165,6 +165,17 @@
 #ifndef SHADOWC_MIPS
 #define SHADOWC_MIPS 0
 #endif
+// Uniform walks: 1 = subdivide only when the root box is non-planar (vssm-yang2010 Algorithm 1).
+#ifndef SHADOWC_BLOCKER_SUBDIVIDE_NONPLANAR
+#define SHADOWC_BLOCKER_SUBDIVIDE_NONPLANAR 0
+#endif
+#ifndef SHADOWC_KERNEL_SUBDIVIDE_NONPLANAR
+#define SHADOWC_KERNEL_SUBDIVIDE_NONPLANAR 0
+#endif
+// SAT box corners: 0 = whole texels, 1 = fractional (sat.glsl, `sat(K, corners: bilinear)`).
+#ifndef SHADOWC_SAT_FRACTIONAL
+#define SHADOWC_SAT_FRACTIONAL 0
+#endif
 #ifndef SHADOWC_EXP_POSITIVE
 #define SHADOWC_EXP_POSITIVE 40.0
 #endif

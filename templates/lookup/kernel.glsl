@@ -42,6 +42,22 @@ ivec4 shadowc_kernelRect(vec2 c, float w) {
   return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
 }
 
+// The kernel as a box in texel units (texel i covers [i, i+1)) for SAT queries: with whole-texel
+// corners the rectangle above; with fractional corners (sat.glsl) the continuous box
+// [c - w/2, c + w/2] of the unrounded width, clamped to the map and at least one texel wide.
+vec4 shadowc_kernelBox(vec2 c, float w) {
+#if SHADOWC_SAT_FRACTIONAL
+  float h = 0.5 * shadowc_clampTexels(w);
+  vec2 size = vec2(shadowc_mapSize());
+  vec2 lo = clamp(c - h, vec2(0.0), size - 1.0);
+  vec2 hi = clamp(c + h, lo + 1.0, size);
+  return vec4(lo, hi);
+#else
+  ivec4 r = shadowc_kernelRect(c, w);
+  return vec4(r.xy, r.zw + 1);
+#endif
+}
+
 // Blocker search width (L7): the cone from the receiver to the light cut at the near plane.
 float shadowc_searchTexels(shadowc_Receiver r) {
   return shadowc_clampTexels(shadowc_searchWidthUV(r.lightWidth, r.zr) * float(shadowc_mapSize().x));

@@ -20,12 +20,24 @@ vec4 shadowc_rectMoments(ivec4 rect, int layer) {
   return textureLod(shadowc_moments, vec3(uv, float(layer)), SHADOWC_MIPS != 0 ? log2(w) : 0.0);
 #endif
 }
+
+// Mean moments over a box in texel units (kernel.glsl, shadowc_kernelBox): fractional corners
+// when the filter asks for them, else the box's whole texels.
+vec4 shadowc_boxMoments(vec4 box, int layer) {
+#if SHADOWC_HAS_SAT && SHADOWC_SAT_FRACTIONAL
+  return shadowc_summedMeanBox(box, layer);
+#else
+  return shadowc_rectMoments(ivec4(box.xy, box.zw - 1.0), layer);
+#endif
+}
 #endif
 
 // Mean moments of a kernel `w` texels wide centred at uv (rect = its clamped texel rectangle).
 // Without a SAT the fetch stays at the receiver's own uv, so bilinear filtering keeps it smooth.
 vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer) {
-#if SHADOWC_HAS_SAT
+#if SHADOWC_HAS_SAT && SHADOWC_SAT_FRACTIONAL
+  return shadowc_summedMeanBox(shadowc_kernelBox(uv * vec2(shadowc_mapSize()), w), layer);
+#elif SHADOWC_HAS_SAT
   return shadowc_summedMean(rect, layer);
 #else
   return textureLod(shadowc_moments, vec3(uv, float(layer)), SHADOWC_MIPS != 0 ? log2(max(w, 1.0)) : 0.0);

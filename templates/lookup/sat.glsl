@@ -8,7 +8,8 @@
 //                  wrap around mod 2^32 and the 4-corner difference is done in uint, which is
 //                  exact as long as the box sum itself fits in 32 bits: the compiler caps the
 //                  kernel at 255 texels (255^2 * 65536 < 2^32). Mean = sum / (65536 * area).
-//   fp32 centered: sums of (v - 0.5); mean = sum / area + 0.5 (the usual precision fix).
+//   fp32 centered: sums of (v - 0.5); mean = sum / area + 0.5 (the usual fix, still 0.09 off on
+//                  1x1 boxes of a 2048^2 map: docs/stability.md; exponential warps are E0420).
 //   fp32 naive:    plain sums; kept so the stability suite can show its error (FACTS.md).
 // Guards: rectangles are clamped to the map by the caller (kernel.glsl) and their area is >= 1.
 #ifndef SHADOWC_SAT_GLSL
@@ -56,5 +57,58 @@ vec4 shadowc_summedMean(ivec4 rect, int layer) {
 #endif
 #endif
 }
+
+#if SHADOWC_SAT_FRACTIONAL
+// Fractional corners (issue 9 defect 6): the mean over the continuous box (x0, y0, x1, y1) in
+// texel units (texel i covers [i, i+1)), i.e. the exact integral of the piecewise-constant
+// moments under the box, which is the bilinear interpolation of the SAT at the four corners.
+// It is evaluated without interpolating large sums (int32 sums wrap): per axis the box covers a
+// partly covered first texel (weight 1 - f0), whole texels (weight 1) and a partly covered last
+// texel (weight f1), or a single texel with weight x1 - x0. The 3 x 3 regions are exact box sums
+// (uint, mod 2^32, from 16 corners) of at most the int32 limit each, weighted in float.
+void shadowc_boxSegments(float a, float b, out ivec4 k, out vec3 w) {
+  int n0 = int(floor(a));
+  int n1 = int(floor(b));
+  if (n1 <= n0) {
+    k = ivec4(n0, n0 + 1, n0 + 1, n0 + 1);
+    w = vec3(b - a, 0.0, 0.0);
+  } else {
+    k = ivec4(n0, n0 + 1, n1, n1 + 1);
+    w = vec3(1.0 - (a - float(n0)), 1.0, b - float(n1));
+  }
+}
+
+vec4 shadowc_summedMeanBox(vec4 box, int layer) {
+  ivec4 kx, ky;
+  vec3 wx, wy;
+  shadowc_boxSegments(box.x, box.z, kx, wx);
+  shadowc_boxSegments(box.y, box.w, ky, wy);
+  // I(k) = S(k - 1): the integral up to the texel boundary k; boundaries past the map add nothing.
+  ivec2 last = textureSize(shadowc_summedArea, 0).xy;
+  kx = min(kx, ivec4(last.x)) - 1;
+  ky = min(ky, ivec4(last.y)) - 1;
+#if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
+  uvec4 c[4][4];
+#else
+  vec4 c[4][4];
+#endif
+  for (int j = 0; j < 4; ++j)
+    for (int i = 0; i < 4; ++i) c[i][j] = shadowc_summedCorner(kx[i], ky[j], layer);
+  vec4 sum = vec4(0.0);
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 3; ++i) {
+      float weight = wx[i] * wy[j];
+      if (weight > 0.0) sum += weight * vec4(c[i + 1][j + 1] - c[i][j + 1] - c[i + 1][j] + c[i][j]);
+    }
+  float area = max((box.z - box.x) * (box.w - box.y), 1e-12);
+#if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
+  return sum / (65536.0 * area);
+#elif SHADOWC_SAT_KIND == SHADOWC_SAT_FP32_CENTERED
+  return sum / area + 0.5;
+#else
+  return sum / area;
+#endif
+}
+#endif
 
 #endif

@@ -19,14 +19,16 @@
 // Guards: eq. 4 is only used when 1 - P > 1e-4 (P -> 1 means no blocker mass, and the
 // non-planar case z_avg >= t never reaches it: Chebyshev returns P = 1 there); z_occ is clamped
 // to [0, d]; every average divides by an area or count tested > 0 first; no blocker -> lit.
-// Sub-kernel rectangles use integer arithmetic (ix * W / 2^level) so they partition the root
-// kernel exactly; a sub-kernel narrower than a texel is empty (area 0) and skipped.
+// Kernels are boxes in texel units (texel i covers [i, i+1)). With whole-texel corners the root
+// snaps to the texel grid and sub-kernels use integer arithmetic (ix * W / 2^level), so they
+// partition the root exactly and one narrower than a texel is empty (area 0) and skipped; with
+// fractional corners (SHADOWC_SAT_FRACTIONAL, sat.glsl) root and sub-kernels are continuous boxes.
 // State lives in private globals so that the generated unrolled traversal (plain functions with
 // builtin types, emitted before this file) can call back into it.
 #ifndef SHADOWC_VSSM_GLSL
 #define SHADOWC_VSSM_GLSL
 
-ivec4 shadowc_vRoot;     // root kernel rectangle (inclusive texels), clamped to the map
+vec4 shadowc_vRoot;      // root kernel box (texel units), inside the map
 float shadowc_vD;        // biased receiver depth
 float shadowc_vMinVariance;
 float shadowc_aEx;       // Algorithm 2 VSMEx
@@ -37,7 +39,7 @@ float shadowc_aPcfArea;  // PCFArea
 float shadowc_aPcfOcc;   // PCFBArea: area-weighted occluded fraction of the PCF leaves
 float shadowc_aPcfDepth; // area-weighted sum of the occluding PCF samples' depths (blocker)
 
-void shadowc_vssmBegin(ivec4 root, float d) {
+void shadowc_vssmBegin(vec4 root, float d) {
   shadowc_vRoot = root;
   shadowc_vD = d;
 #if SHADOWC_HAS_SAT
@@ -54,20 +56,27 @@ void shadowc_vssmBegin(ivec4 root, float d) {
   shadowc_aPcfDepth = 0.0;
 }
 
-// Sub-kernel (ix, iy) of a den x den partition of the root kernel.
-ivec4 shadowc_subRect(ivec3 node) {
-  ivec2 size = shadowc_vRoot.zw - shadowc_vRoot.xy + 1;
-  ivec2 lo = shadowc_vRoot.xy + (node.xy * size) / node.z;
-  ivec2 hi = shadowc_vRoot.xy + ((node.xy + 1) * size) / node.z - 1;
-  return ivec4(lo, hi);
+// Sub-kernel (ix, iy) of a den x den partition of the root kernel, as a box.
+vec4 shadowc_subBox(ivec3 node) {
+#if SHADOWC_SAT_FRACTIONAL
+  vec2 size = shadowc_vRoot.zw - shadowc_vRoot.xy;
+  return vec4(shadowc_vRoot.xy + vec2(node.xy) * size / float(node.z),
+              shadowc_vRoot.xy + vec2(node.xy + 1) * size / float(node.z));
+#else
+  ivec2 root = ivec2(shadowc_vRoot.xy);
+  ivec2 size = ivec2(shadowc_vRoot.zw) - root;
+  return vec4(root + (node.xy * size) / node.z, root + ((node.xy + 1) * size) / node.z);
+#endif
 }
+
+float shadowc_boxArea(vec4 box) { return (box.z - box.x) * (box.w - box.y); }
 
 // Algorithm 2 L6-L19 for one sub-kernel: 0 = accepted (lit or normal), 1 = non-planar.
 int shadowc_qtClassify(ivec3 node) {
-  ivec4 rect = shadowc_subRect(node);
-  if (rect.z < rect.x || rect.w < rect.y) return 0;
-  float area = float((rect.z - rect.x + 1) * (rect.w - rect.y + 1));
-  vec4 m = shadowc_rectMoments(rect, 0);
+  vec4 box = shadowc_subBox(node);
+  float area = shadowc_boxArea(box);
+  if (!(area > 0.0)) return 0;
+  vec4 m = shadowc_boxMoments(box, 0);
   float variance = m.y - m.x * m.x;
   if (m.x >= shadowc_vD && variance < SHADOWC_LIT_THRESHOLD) {
     shadowc_aLitArea += area;
@@ -84,17 +93,21 @@ int shadowc_qtClassify(ivec3 node) {
 
 // A non-planar leaf (Algorithm 2 L22-L26).
 void shadowc_qtResolveLeaf(ivec3 node) {
-  ivec4 rect = shadowc_subRect(node);
-  if (rect.z < rect.x || rect.w < rect.y) return;
-  float area = float((rect.z - rect.x + 1) * (rect.w - rect.y + 1));
+  vec4 box = shadowc_subBox(node);
+  float area = shadowc_boxArea(box);
+  if (!(area > 0.0)) return;
 #if SHADOWC_FALLBACK_PCF
   const int n = SHADOWC_FALLBACK_N;
-  vec2 size = vec2(rect.zw - rect.xy + 1);
+  vec2 size = box.zw - box.xy;
   float occluded = 0.0;
   float depthSum = 0.0;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
-      ivec2 t = rect.xy + ivec2(floor((vec2(i, j) + 0.5) * size / float(n)));
+#if SHADOWC_SAT_FRACTIONAL
+      ivec2 t = ivec2(floor(box.xy + (vec2(i, j) + 0.5) * size / float(n)));
+#else
+      ivec2 t = ivec2(box.xy) + ivec2(floor((vec2(i, j) + 0.5) * size / float(n)));
+#endif
       float z = shadowc_depthAt(t);
       if (z < shadowc_vD) {
         occluded += 1.0;
@@ -116,8 +129,11 @@ void shadowc_qtLeaf(ivec3 node) {
   if (shadowc_qtClassify(node) == 1) shadowc_qtResolveLeaf(node);
 }
 
-// Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision.
-void shadowc_uniformWalk(int den) {
+// Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision. `nonPlanarOnly`:
+// Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
+// the den x den walk only when it is non-planar (classify accumulates nothing then).
+void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
+  if (nonPlanarOnly && den > 1 && shadowc_qtClassify(ivec3(0, 0, 1)) == 0) return;
   for (int j = 0; j < den; ++j)
     for (int i = 0; i < den; ++i) shadowc_qtLeaf(ivec3(i, j, den));
 }
@@ -157,8 +173,8 @@ void shadowc_qtWalk(int height) {
 #endif
 
 // Average blocker depth over the search rectangle (L11-L15), or -1 when nothing occludes.
-float shadowc_vssmBlocker(ivec4 searchRect, float d) {
-  shadowc_vssmBegin(searchRect, d);
+float shadowc_vssmBlocker(vec4 searchBox, float d) {
+  shadowc_vssmBegin(searchBox, d);
 #if SHADOWC_BLOCKER_SUBDIVISION == SHADOWC_SUBDIV_QUADTREE
 #if SHADOWC_QUADTREE_UNROLLED
   shadowc_qtUnrolledBlocker();
@@ -166,9 +182,9 @@ float shadowc_vssmBlocker(ivec4 searchRect, float d) {
   shadowc_qtWalk(SHADOWC_BLOCKER_HEIGHT);
 #endif
 #elif SHADOWC_BLOCKER_SUBDIVISION == SHADOWC_SUBDIV_UNIFORM
-  shadowc_uniformWalk(SHADOWC_BLOCKER_M);
+  shadowc_uniformWalk(SHADOWC_BLOCKER_M, SHADOWC_BLOCKER_SUBDIVIDE_NONPLANAR != 0);
 #else
-  shadowc_uniformWalk(1);
+  shadowc_uniformWalk(1, false);
 #endif
   // Normal group: eq. 5 moments, then eq. 4 with z_unocc = t; its blocker area is (1 - P) T.
   float a1 = 0.0;
@@ -189,8 +205,8 @@ float shadowc_vssmBlocker(ivec4 searchRect, float d) {
 }
 
 // Visibility over the penumbra rectangle (L17-L20, Algorithm 2 L28-L31).
-float shadowc_vssmVisibility(ivec4 rect, float d) {
-  shadowc_vssmBegin(rect, d);
+float shadowc_vssmVisibility(vec4 box, float d) {
+  shadowc_vssmBegin(box, d);
 #if SHADOWC_KERNEL_SUBDIVISION == SHADOWC_SUBDIV_QUADTREE
 #if SHADOWC_QUADTREE_UNROLLED
   shadowc_qtUnrolledKernel();
@@ -198,9 +214,9 @@ float shadowc_vssmVisibility(ivec4 rect, float d) {
   shadowc_qtWalk(SHADOWC_KERNEL_HEIGHT);
 #endif
 #elif SHADOWC_KERNEL_SUBDIVISION == SHADOWC_SUBDIV_UNIFORM
-  shadowc_uniformWalk(SHADOWC_KERNEL_N);
+  shadowc_uniformWalk(SHADOWC_KERNEL_N, SHADOWC_KERNEL_SUBDIVIDE_NONPLANAR != 0);
 #else
-  shadowc_uniformWalk(1);
+  shadowc_uniformWalk(1, false);
 #endif
   float l = 1.0;
   if (shadowc_aVsmArea > 0.0)
@@ -213,8 +229,8 @@ float shadowc_vssmVisibility(ivec4 rect, float d) {
 }
 
 float shadowc_vssm(shadowc_Receiver r) {
-  ivec4 searchRect = shadowc_kernelRect(r.texel, shadowc_searchTexels(r));
-  float zb = shadowc_vssmBlocker(searchRect, r.d); SHADOWC_NAIVE_VSSM_RETURN(zb)
+  vec4 searchBox = shadowc_kernelBox(r.texel, shadowc_searchTexels(r));
+  float zb = shadowc_vssmBlocker(searchBox, r.d); SHADOWC_NAIVE_VSSM_RETURN(zb)
 #if SHADOWC_CONTACT
   // sec. 6.4: blocker and receiver nearly touch; the SAT is least precise there and the penumbra
   // is small, so a few bilinear PCF taps are both cheaper and more accurate. Detected on eq. 4's
@@ -222,7 +238,7 @@ float shadowc_vssm(shadowc_Receiver r) {
   // front of d: right behind a flat occluder 1 - P -> 0 and eq. 4 finds no blocker (or a
   // meaningless one), and the walk returned "lit" before the contact test (issue 9 defect 7;
   // stability case contact_before_no_blocker_lit).
-  float zAvg = shadowc_rectMoments(searchRect, 0).x;
+  float zAvg = shadowc_boxMoments(searchBox, 0).x;
   bool touching = r.d - zAvg > 0.0 && r.d - zAvg < SHADOWC_CONTACT_EPSILON;
   if (touching || (zb >= 0.0 && abs(r.d - zb) < SHADOWC_CONTACT_EPSILON)) {
 #if SHADOWC_KERNEL_PENUMBRA
@@ -239,7 +255,7 @@ float shadowc_vssm(shadowc_Receiver r) {
 #else
   float w = SHADOWC_KERNEL_FIXED_TEXELS;
 #endif
-  return shadowc_vssmVisibility(shadowc_kernelRect(r.texel, w), r.d);
+  return shadowc_vssmVisibility(shadowc_kernelBox(r.texel, w), r.d);
 }
 
 #endif

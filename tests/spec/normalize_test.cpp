@@ -6,6 +6,7 @@
 
 #include "spec/load_filter.h"
 #include "spec/precision.h"
+#include "spec/print_filter.h"
 #include "support/test_support.h"
 
 using namespace shadowc;
@@ -88,11 +89,70 @@ TEST(Precision, BothSidesOfTheFp16Boundary) {
   EXPECT_EQ(codes("moments evsm2(exponent: 5.6)\nstorage fp16"), Codes{"E0404"});
 }
 
-TEST(Precision, BothSidesOfTheSatBoundaryDependOnMapSize) {
-  const std::string sat = "\nstorage sat(fp32_centered)\nkernel fixed(5)";             // VSSM needs linear (E0417)
-  EXPECT_EQ(codes("moments exp(exponent: 34)" + sat), Codes{});                        // 2048: limit 34.38
-  EXPECT_EQ(codes("moments exp(exponent: 34)\nmap_size 4096" + sat), Codes{"E0404"});  // 4096: 33.68
-  EXPECT_EQ(codes("moments exp(exponent: 35)" + sat), Codes{"E0404"});
+TEST(Precision, ExponentialWarpsInAnFp32SatAreRejectedAtAnyExponent) {
+  // Issue 9 defect 3: below the overflow limit (34.38 at 2048^2) small boxes still cancel (the
+  // stability suite's exponent_limit_evsm4_sat_fp32_centered errs 1.0), so E0420 replaces E0404.
+  const std::string fixed = "\nkernel fixed(5)";
+  for (const char* sat : {"\nstorage sat(fp32_centered)", "\nstorage sat(fp32)"}) {
+    const Codes naive =
+        std::string(sat).find("centered") == std::string::npos ? Codes{"E0420", "W0504"} : Codes{"E0420"};
+    EXPECT_EQ(codes("moments exp(exponent: 1)" + std::string(sat) + fixed), naive) << sat;
+    EXPECT_EQ(codes("moments evsm2(exponent: 34)" + std::string(sat) + fixed), naive) << sat;
+    EXPECT_EQ(codes("moments evsm4(exponent: 40, negative_exponent: 40)" + std::string(sat) + fixed), naive) << sat;
+  }
+  // Siblings: the same warps in an int32 SAT within its limit, and linear moments in an fp32 SAT.
+  EXPECT_EQ(codes("moments exp(exponent: 5)\nstorage sat(int32)" + fixed), Codes{});
+  EXPECT_EQ(codes("moments evsm2(exponent: 5)\nstorage sat(int32)" + fixed), Codes{});
+  EXPECT_EQ(codes("moments linear\nstorage sat(fp32_centered)" + fixed), Codes{});
+  EXPECT_EQ(codes("moments exp(exponent: 6)\nstorage sat(int32)" + fixed), Codes{"E0404"});
+}
+
+TEST(Normalize, VssmFallbackDefaultsToPcf2x2) {
+  // Issue 9 defect 4: non-planar sub-kernels default to the paper's option 2 (sec. 5.1), PCF.
+  const std::string vssm = "moments linear\nstorage sat(int32)\nblocker moments\n";
+  // The blocker walk is subdivided by default (uniform m = 5), so even a penumbra kernel has leaves.
+  for (const char* kernel : {"kernel uniform(4)", "kernel quadtree(height: 2)", "kernel penumbra(max: 64)"}) {
+    const FilterSpec s = load(vssm + kernel);
+    EXPECT_TRUE(s.fallback.pcf) << kernel;
+    EXPECT_EQ(s.fallback.n, 2) << kernel;
+  }
+  // No subdivision anywhere: the whole box is the only "leaf"; 2x2 PCF there measured worse than lit.
+  EXPECT_FALSE(load(vssm.substr(0, vssm.size() - 1) + "(none)\nkernel penumbra(max: 64)").fallback.pcf);
+  // Option 1 stays reachable, and a size is kept.
+  EXPECT_FALSE(load(vssm + "kernel uniform(4)\nfallback none").fallback.pcf);
+  EXPECT_EQ(load(vssm + "kernel uniform(4)\nfallback pcf(3x3)").fallback.n, 3);
+  // Not VSSM: nothing to fall back from, so no default and a written one warns.
+  EXPECT_FALSE(load("moments linear\nstorage sat(int32)\nkernel fixed(5)").fallback.pcf);
+  EXPECT_EQ(codes("moments linear\nstorage sat(int32)\nkernel fixed(5)\nfallback pcf(2x2)"), Codes{"W0505"});
+  EXPECT_EQ(codes(vssm + "kernel penumbra(max: 64)\nfallback pcf(2x2)"), Codes{});
+}
+
+TEST(Combinations, UniformSubdivideOption) {
+  // Issue 9 defect 8: Algorithm 1 subdivides only non-planar kernels; `subdivide: nonplanar`
+  // (kernel and blocker walks), default `always`. Before, the argument was unknown (E0303).
+  const std::string base = "moments linear\nstorage sat(int32)\n";
+  const FilterSpec s =
+      load(base + "blocker moments(uniform(m: 5, subdivide: nonplanar))\nkernel uniform(4, subdivide: nonplanar)");
+  EXPECT_TRUE(s.kernel.uniformNonPlanarOnly);
+  EXPECT_TRUE(s.blocker.uniformNonPlanarOnly);
+  const FilterSpec d = load(base + "blocker moments\nkernel uniform(4)");
+  EXPECT_FALSE(d.kernel.uniformNonPlanarOnly);
+  EXPECT_FALSE(d.blocker.uniformNonPlanarOnly);
+  EXPECT_EQ(codes(base + "blocker moments\nkernel uniform(4, subdivide: sometimes)"), Codes{"E0302"});
+  // A 1 x 1 walk is never subdivided: the option has no effect.
+  EXPECT_EQ(codes(base + "blocker moments\nkernel uniform(1, subdivide: nonplanar)"), Codes{"W0505"});
+  EXPECT_EQ(codes(base + "blocker moments(uniform(m: 1, subdivide: nonplanar))\nkernel uniform(4)"), Codes{"W0505"});
+  // The printed form round-trips (the driver re-checks built specs through it).
+  EXPECT_NE(printFilter(s).find("subdivide: nonplanar"), std::string::npos);
+}
+
+TEST(Combinations, SatCornersOption) {
+  // Issue 9 defect 6: `sat(K, corners: bilinear)`; default whole texels.
+  EXPECT_TRUE(load("moments linear\nstorage sat(int32, corners: bilinear)\nkernel fixed(5)").storage.fractionalCorners);
+  EXPECT_FALSE(load("moments linear\nstorage sat(int32)\nkernel fixed(5)").storage.fractionalCorners);
+  EXPECT_EQ(codes("moments linear\nstorage sat(int32, corners: round)\nkernel fixed(5)"), Codes{"E0302"});
+  EXPECT_NE(printFilter(load("moments linear\nstorage sat(int32, corners: bilinear)")).find("corners: bilinear"),
+            std::string::npos);
 }
 
 TEST(Combinations, Int32SatBoxLimit) {

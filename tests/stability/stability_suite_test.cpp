@@ -78,6 +78,20 @@ TEST_F(StabilityNaiveTest, PlainFp32SatFailsWhereInt32Passes) {
   EXPECT_TRUE(int32Seen);
 }
 
+// Issue 9 defect 6: whole-texel SAT corners hold the visibility constant across a texel and jump
+// at its boundary; fractional corners follow the continuous box (each technique's pair).
+TEST_F(StabilityNaiveTest, TexelCornersStepWhereFractionalCornersFollowTheBox) {
+  const auto rs = runNamed("sat_fractional_corners");
+  ASSERT_EQ(rs.size(), 4u);
+  for (const CaseResult& r : rs) {
+    EXPECT_EQ(r.nonFinite + r.outOfRange, 0u) << r.filter;
+    if (r.naive)
+      EXPECT_GT(r.worstError, 1e-2) << r.filter << ": " << r.detail;
+    else
+      EXPECT_LE(r.worstError, r.bound) << r.filter << ": " << r.detail;
+  }
+}
+
 // EVSM4 negative exponent 48 in fp32 (checker: E0404) vs 42: the naive one leaves its bound.
 TEST_F(StabilityNaiveTest, UnclampedExponentFailsWhereLimitPasses) {
   const auto rs = runNamed("exponent_limit_evsm4_fp32");

@@ -47,5 +47,6 @@ void addNaiveCases(std::vector<StabilityCase>& out);
 void addEarlyOutCases(std::vector<StabilityCase>& out);
 void addContactCases(std::vector<StabilityCase>& out);
 void addMsmCases(std::vector<StabilityCase>& out);
+void addCornerCases(std::vector<StabilityCase>& out);
 
 }  // namespace shadowc::validation

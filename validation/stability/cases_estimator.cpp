@@ -34,11 +34,22 @@ const std::vector<FilterSpec>& estimatorFilters() {
           "moments linear\nstorage sat(int32)\nblocker moments(quadtree(height: 2))\nkernel quadtree(height: 3)\n"
           "fallback pcf(2x2)"),
       libraryFilter("pcf", "depth\nsampling grid(5x5)"),
+      // Algorithm 1's subdivision of non-planar kernels only (issue 9 defect 8) and fractional
+      // SAT corners (defect 6): the same estimator cases hold them to the intent reference.
+      libraryFilter("vssm_uniform_nonplanar",
+                    "moments linear\nstorage sat(int32)\nblocker moments(uniform(m: 5, subdivide: nonplanar))\n"
+                    "kernel uniform(4, subdivide: nonplanar)\nfallback pcf(2x2)"),
+      libraryFilter("vssm_fractional",
+                    "moments linear\nstorage sat(int32, corners: bilinear)\nblocker moments\n"
+                    "kernel uniform(4)\nfallback pcf(2x2)"),
   };
   return f;
 }
 
-std::vector<FilterSpec> vssmFilters() { return {estimatorFilters()[7], estimatorFilters()[8]}; }
+std::vector<FilterSpec> vssmFilters() {
+  const auto& f = estimatorFilters();
+  return {f[7], f[8], f[10], f[11]};
+}
 
 std::vector<Receiver> gridReceivers(const std::vector<double>& depths, int perDepth = 6) {
   std::vector<Receiver> rs;

@@ -1,6 +1,8 @@
 // The naive forms, each shown failing on the case where ours passes (docs/stability.md):
-//  * EVSM exponent past the storage limit (fp32, fp16, inside an fp32 SAT): the checker rejects
-//    it (E0404, tested here); a spec built past the checker overflows the negative moment;
+//  * EVSM exponent past the storage limit (fp32, fp16): the checker rejects it (E0404, tested
+//    here); a spec built past the checker overflows the negative moment;
+//  * EVSM inside an fp32 SAT at any exponent: the checker rejects it (E0420); built past the
+//    checker, small boxes cancel (error 1.0);
 //  * the VSSM blocker estimate eq. 4 without the 1 - P guard (FilterSpec::naiveUnguarded).
 // (Plain fp32 SAT is the naive row of the sat_box_mean_* cases.)
 #include <fmt/format.h>
@@ -21,10 +23,30 @@ struct ExponentDemo {
   uint32_t map;
 };
 
+bool isFp32Sat(const ExponentDemo& d) { return d.storage.find("sat(fp32") != std::string::npos; }
+
+// The checker's verdict on the demo's text with negative exponent `negative`: does it reject it
+// with `code`?
+bool checkerRejects(const ExponentDemo& d, double negative, const char* code) {
+  driver::Options check;
+  check.stopAfter = driver::Stage::Check;
+  const driver::Result checked =
+      driver::compileSource(fmt::format("filter x {{\nmoments evsm4({}, {})\nstorage {}\nmap_size {}\n}}\n",
+                                        std::min(d.ours, 5.0), negative, d.storage, d.map),
+                            "x.shadow", check);
+  return !checked.spec && std::any_of(checked.diagnostics.begin(), checked.diagnostics.end(),
+                                      [code](const Diagnostic& g) { return g.code == code; });
+}
+
 FilterSpec evsmSpec(const ExponentDemo& d, double negative, bool naive) {
-  const std::string body =
-      fmt::format("moments evsm4({}, {})\nstorage {}\nmap_size {}", std::min(d.ours, 5.0), d.ours, d.storage, d.map);
+  // EVSM in an fp32 SAT is a checker error at any exponent (E0420, issue 9 defect 3): the spec is
+  // built as plain fp32 and given the SAT past the checker, to show what the checker prevents.
+  const bool fp32Sat = isFp32Sat(d);
+  const std::string body = fmt::format("moments evsm4({}, {})\nstorage {}\nmap_size {}", std::min(d.ours, 5.0), d.ours,
+                                       fp32Sat ? std::string("fp32") : d.storage, d.map);
   FilterSpec s = libraryFilter(d.name, body);
+  if (fp32Sat)
+    s.storage.sat = d.storage.find("centered") != std::string::npos ? SatKind::Fp32Centered : SatKind::Fp32Naive;
   if (naive) {
     s.name = d.name + "_past_limit";
     s.moments.negativeExponent = negative;
@@ -39,7 +61,7 @@ CaseResult exponentCase(SuiteContext& ctx, const FilterSpec& s, const ExponentDe
   // Inside an fp32 SAT even the exponent at the limit fails: the limit (42 - ln(W^2)/2) prevents
   // overflow but not cancellation (box sums of e-^2 ~ 1e36 lose every digit of a small box), so
   // both rows are shown failing (issue 9 defect 3).
-  const bool fp32Sat = d.storage.find("sat(fp32") != std::string::npos;
+  const bool fp32Sat = isFp32Sat(d);
   r.naive = naive || fp32Sat;
   // Bound: the fp32 moments of a box of depths in [0, 1] with c- at the limit keep ~7 digits;
   // the visibility of receivers 0.05..0.3 behind the occluders moves by < 1e-3 (measured 1e-5).
@@ -47,16 +69,10 @@ CaseResult exponentCase(SuiteContext& ctx, const FilterSpec& s, const ExponentDe
   r.boundReason = d.storage == "fp16" ? "fp16 moments keep 11 bits: Chebyshev within 0.05"
                                       : "fp32 moments at the exponent limit keep ~7 digits";
   std::string rejection;
-  if (naive) {
-    driver::Options check;
-    check.stopAfter = driver::Stage::Check;
-    const driver::Result checked =
-        driver::compileSource(fmt::format("filter x {{\nmoments evsm4({}, {})\nstorage {}\nmap_size {}\n}}\n",
-                                          std::min(d.ours, 5.0), s.moments.negativeExponent, d.storage, d.map),
-                              "x.shadow", check);
-    const bool rejected = !checked.spec && std::any_of(checked.diagnostics.begin(), checked.diagnostics.end(),
-                                                       [](const Diagnostic& g) { return g.code == "E0404"; });
-    rejection = rejected ? "checker rejects it (E0404); " : "CHECKER ACCEPTS IT; ";
+  if (naive || fp32Sat) {
+    const char* code = fp32Sat ? "E0420" : "E0404";
+    const bool rejected = checkerRejects(d, s.moments.negativeExponent, code);
+    rejection = rejected ? fmt::format("checker rejects it ({}); ", code) : std::string("CHECKER ACCEPTS IT; ");
     if (!rejected) r.bound = -1;  // forces the row to count as failing the demonstration
     // fp16 past the limit: the saturated negative moment leaves these receivers' minimum of the
     // two bounds unchanged, so the GPU run cannot show the failure; the checker's rejection is the

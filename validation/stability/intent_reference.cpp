@@ -52,6 +52,9 @@ double powerCdf(double zmin, double zmax, double mean, double d) {
   return unit((1 - std::pow(t, beta)) / denom);
 }
 
+// A kernel as a box in texel units (x0, y0, x1, y1), texel i covering [i, i+1) (kernel.glsl).
+using Box = std::array<double, 4>;
+
 struct Geometry {
   double t;       // biased receiver depth (fp32-emulated receiver depth minus bias)
   double cx, cy;  // continuous texel coordinates
@@ -87,6 +90,22 @@ class Evaluator {
             std::clamp(ly + n - 1, 0, last)};
   }
 
+  // kernel.glsl shadowc_kernelBox: the rectangle's texels, or the continuous box with fractional
+  // SAT corners (sat.glsl, issue 9 defect 6).
+  Box kernelBox(double cx, double cy, double w) const {
+    if (!s_.storage.fractionalCorners || s_.storage.sat == SatKind::None) {
+      const auto r = kernelRect(cx, cy, w);
+      return {double(r[0]), double(r[1]), double(r[2] + 1), double(r[3] + 1)};
+    }
+    const double h = 0.5 * clampTexels(w), size = map_.size;
+    const double lx = std::clamp(cx - h, 0.0, size - 1), ly = std::clamp(cy - h, 0.0, size - 1);
+    return {lx, ly, std::clamp(cx + h, lx + 1, size), std::clamp(cy + h, ly + 1, size)};
+  }
+  std::vector<double> boxMoments(const Box& b, int layer) const {
+    if (s_.storage.fractionalCorners) return field_->boxMeanFrac(b[0], b[1], b[2], b[3], layer);
+    return field_->boxMean(int(b[0]), int(b[1]), int(b[2]) - 1, int(b[3]) - 1, layer);
+  }
+
   double pcfGrid(double cx, double cy, double w, double t, int n) const {
     double lit = 0;
     for (int j = 0; j < n; ++j)
@@ -112,9 +131,9 @@ class Evaluator {
     }
     return out;
   }
-  std::vector<double> kernelMoments(const Geometry& g, const std::array<int, 4>& rect, int layer) const {
+  std::vector<double> kernelMoments(const Geometry& g, const Box& box, int layer) const {
     ensureField();
-    if (s_.storage.sat != SatKind::None) return field_->boxMean(rect[0], rect[1], rect[2], rect[3], layer);
+    if (s_.storage.sat != SatKind::None) return boxMoments(box, layer);
     return bilinear(g.cx / map_.size, g.cy / map_.size, layer);
   }
   double estimate(const std::vector<double>& m, double d, double minVariance) const {
@@ -149,14 +168,14 @@ class Evaluator {
     if (s_.moments.layers == 1) return {0.0, 1.0};
     return {split(i) - s_.moments.overlap, split(i + 1) + s_.moments.overlap};
   }
-  double layerVisibility(const Geometry& g, const std::array<int, 4>& rect, double d, int layer) const {
+  double layerVisibility(const Geometry& g, const Box& rect, double d, int layer) const {
     const auto r = layerRange(layer);
     const double w = std::max(r[1] - r[0], 1e-6);
     const double dl = s_.moments.layers > 1 ? clamp01((d - r[0]) / w) : d;
     const double mv = s_.moments.layers > 1 ? s_.moments.minVariance / (w * w) : s_.moments.minVariance;
     return estimate(kernelMoments(g, rect, layer), dl, mv);
   }
-  double filteredVisibility(const Geometry& g, const std::array<int, 4>& rect, double d) const {
+  double filteredVisibility(const Geometry& g, const Box& rect, double d) const {
     const int layers = s_.moments.layers;
     int j = 0;
     for (int i = 1; i < layers; ++i)
@@ -180,15 +199,22 @@ class Evaluator {
   struct Acc {
     double ex = 0, ex2 = 0, vsm = 0, lit = 0, pcf = 0, pcfOcc = 0, pcfDepth = 0;
   };
-  std::array<int, 4> subRect(const std::array<int, 4>& root, int ix, int iy, int den) const {
-    const int sx = root[2] - root[0] + 1, sy = root[3] - root[1] + 1;
-    return {root[0] + (ix * sx) / den, root[1] + (iy * sy) / den, root[0] + ((ix + 1) * sx) / den - 1,
-            root[1] + ((iy + 1) * sy) / den - 1};
+  // vssm.glsl shadowc_subBox: integer partition of whole texels, or continuous with fractional corners.
+  Box subRect(const Box& root, int ix, int iy, int den) const {
+    if (s_.storage.fractionalCorners) {
+      const double sx = root[2] - root[0], sy = root[3] - root[1];
+      return {root[0] + ix * sx / den, root[1] + iy * sy / den, root[0] + (ix + 1) * sx / den,
+              root[1] + (iy + 1) * sy / den};
+    }
+    const int x0 = int(root[0]), y0 = int(root[1]), sx = int(root[2]) - x0, sy = int(root[3]) - y0;
+    return {double(x0 + (ix * sx) / den), double(y0 + (iy * sy) / den), double(x0 + ((ix + 1) * sx) / den),
+            double(y0 + ((iy + 1) * sy) / den)};
   }
-  int classify(const std::array<int, 4>& r, double d, Acc& a) const {
-    if (r[2] < r[0] || r[3] < r[1]) return 0;
-    const double area = double(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
-    const auto m = field_->boxMean(r[0], r[1], r[2], r[3], 0);
+  static double area(const Box& r) { return (r[2] - r[0]) * (r[3] - r[1]); }
+  int classify(const Box& r, double d, Acc& a) const {
+    const double area = Evaluator::area(r);
+    if (!(area > 0)) return 0;
+    const auto m = boxMoments(r, 0);
     const double variance = m[1] - m[0] * m[0];
     if (m[0] >= d && variance < s_.kernel.litThreshold) {
       a.lit += area;
@@ -202,19 +228,19 @@ class Evaluator {
     }
     return 1;
   }
-  void resolveLeaf(const std::array<int, 4>& r, double d, Acc& a) const {
-    if (r[2] < r[0] || r[3] < r[1]) return;
-    const double area = double(r[2] - r[0] + 1) * (r[3] - r[1] + 1);
+  void resolveLeaf(const Box& r, double d, Acc& a) const {
+    const double area = Evaluator::area(r);
+    if (!(area > 0)) return;
     if (!s_.fallback.pcf) {
       a.lit += area;
       return;
     }
     const int n = std::max(1, s_.fallback.n);
-    const double sx = r[2] - r[0] + 1, sy = r[3] - r[1] + 1;
+    const double sx = r[2] - r[0], sy = r[3] - r[1];
     double occ = 0, depthSum = 0;
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        const int tx = r[0] + int(std::floor((i + 0.5) * sx / n)), ty = r[1] + int(std::floor((j + 0.5) * sy / n));
+        const int tx = int(std::floor(r[0] + (i + 0.5) * sx / n)), ty = int(std::floor(r[1] + (j + 0.5) * sy / n));
         const double z = map_.at(tx, ty);
         if (z < d) {
           occ += 1;
@@ -226,7 +252,7 @@ class Evaluator {
     a.pcfOcc += occ * scale;
     a.pcfDepth += depthSum * scale;
   }
-  void walk(const std::array<int, 4>& root, Subdivision sub, int param, double d, Acc& a) const {
+  void walk(const Box& root, Subdivision sub, int param, bool nonPlanarOnly, double d, Acc& a) const {
     if (sub == Subdivision::Quadtree) {
       const std::function<void(int, int, int)> visit = [&](int ix, int iy, int den) {
         const auto r = subRect(root, ix, iy, den);
@@ -242,16 +268,19 @@ class Evaluator {
       return;
     }
     const int den = sub == Subdivision::Uniform ? param : 1;
+    // vssm.glsl shadowc_uniformWalk: Algorithm 1 subdivides only a non-planar root.
+    if (sub == Subdivision::Uniform && nonPlanarOnly && den > 1 && classify(subRect(root, 0, 0, 1), d, a) != 1) return;
     for (int j = 0; j < den; ++j)
       for (int i = 0; i < den; ++i) {
         const auto r = subRect(root, i, j, den);
         if (classify(r, d, a) == 1) resolveLeaf(r, d, a);
       }
   }
-  double vssmBlocker(const std::array<int, 4>& rect, double d) const {
+  double vssmBlocker(const Box& rect, double d) const {
     Acc a;
     walk(rect, s_.blocker.subdivision,
-         s_.blocker.subdivision == Subdivision::Quadtree ? s_.blocker.quadtreeHeight : s_.blocker.uniformM, d, a);
+         s_.blocker.subdivision == Subdivision::Quadtree ? s_.blocker.quadtreeHeight : s_.blocker.uniformM,
+         s_.blocker.uniformNonPlanarOnly, d, a);
     double a1 = 0, z1 = 0;
     if (a.vsm > 0) {
       const double mean = a.ex / a.vsm, meanSq = a.ex2 / a.vsm;
@@ -265,10 +294,11 @@ class Evaluator {
     if (!(total > 1e-6)) return -1;
     return std::clamp((z1 * a1 + a.pcfDepth) / total, 0.0, d);
   }
-  double vssmVisibility(const std::array<int, 4>& rect, double d) const {
+  double vssmVisibility(const Box& rect, double d) const {
     Acc a;
     walk(rect, s_.kernel.subdivision,
-         s_.kernel.subdivision == Subdivision::Quadtree ? s_.kernel.quadtreeHeight : s_.kernel.uniformN, d, a);
+         s_.kernel.subdivision == Subdivision::Quadtree ? s_.kernel.quadtreeHeight : s_.kernel.uniformN,
+         s_.kernel.uniformNonPlanarOnly, d, a);
     double l = 1;
     if (a.vsm > 0) l = reduceBleeding(s_, chebyshev(a.ex / a.vsm, a.ex2 / a.vsm, d, minVarianceOf(s_)));
     const double l1 = a.pcf > 0 ? 1 - a.pcfOcc / a.pcf : 1;
@@ -305,14 +335,14 @@ class Evaluator {
     }
     if (tech == 3) {
       ensureField();
-      const double zb = vssmBlocker(kernelRect(g.cx, g.cy, searchTexels(g)), g.t);
+      const double zb = vssmBlocker(kernelBox(g.cx, g.cy, searchTexels(g)), g.t);
       if (zb < 0) return 1;
       const double w = penumbra ? penumbraTexels(g, zb) : s_.kernel.fixedTexels;
-      return vssmVisibility(kernelRect(g.cx, g.cy, w), g.t);
+      return vssmVisibility(kernelBox(g.cx, g.cy, w), g.t);
     }
     if (tech == 2) {
       const double w = penumbra ? searchTexels(g) : s_.kernel.fixedTexels;
-      return unit(filteredVisibility(g, kernelRect(g.cx, g.cy, w), g.t));
+      return unit(filteredVisibility(g, kernelBox(g.cx, g.cy, w), g.t));
     }
     // Depth representation, grid pattern, fixed kernel or the whole search region.
     const double w = penumbra ? searchTexels(g) : s_.kernel.fixedTexels;
@@ -418,6 +448,27 @@ std::vector<double> MomentsField::boxMean(int x0, int y0, int x1, int y1, int la
   for (int c = 0; c < 4; ++c) {
     auto P = [&](int xx, int yy) { return prefix_[((layer * s1 * s1) + size_t(yy) * s1 + size_t(xx)) * 4 + c]; };
     out[c] = (P(x1 + 1, y1 + 1) - P(x0, y1 + 1) - P(x1 + 1, y0) + P(x0, y0)) / area;
+  }
+  return out;
+}
+
+// The integral up to a continuous point is bilinear between the integer prefix sums (the texels
+// are constant), so the box integral is the 4-corner difference of interpolated prefix sums.
+std::vector<double> MomentsField::boxMeanFrac(double x0, double y0, double x1, double y1, int layer) const {
+  const size_t s1 = size + 1;
+  std::vector<double> out(4, 0.0);
+  const double area = (x1 - x0) * (y1 - y0);
+  if (!(area > 0)) return out;
+  for (int c = 0; c < 4; ++c) {
+    auto P = [&](int xx, int yy) { return prefix_[((layer * s1 * s1) + size_t(yy) * s1 + size_t(xx)) * 4 + c]; };
+    auto I = [&](double x, double y) {
+      const int ix = std::clamp(int(std::floor(x)), 0, int(size) - 1),
+                iy = std::clamp(int(std::floor(y)), 0, int(size) - 1);
+      const double fx = x - ix, fy = y - iy;
+      return (1 - fx) * (1 - fy) * P(ix, iy) + fx * (1 - fy) * P(ix + 1, iy) + (1 - fx) * fy * P(ix, iy + 1) +
+             fx * fy * P(ix + 1, iy + 1);
+    };
+    out[c] = (I(x1, y1) - I(x0, y1) - I(x1, y0) + I(x0, y0)) / area;
   }
   return out;
 }

@@ -24,7 +24,9 @@ bool intentModels(const FilterSpec& spec);
 struct MomentsField {
   MomentsField(const FilterSpec& spec, const DepthMap& map);
   std::vector<double> boxMean(int x0, int y0, int x1, int y1, int layer) const;  // 4 channels
-  std::vector<double> texel(int x, int y, int layer) const;                      // blurred, clamp to edge
+  // Over the continuous box [x0, x1] x [y0, y1] in texel units (texel i covers [i, i+1)).
+  std::vector<double> boxMeanFrac(double x0, double y0, double x1, double y1, int layer) const;
+  std::vector<double> texel(int x, int y, int layer) const;  // blurred, clamp to edge
   uint32_t size = 0;
   int layers = 1;
 

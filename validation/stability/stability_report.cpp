@@ -31,7 +31,8 @@ default SAT is int32 16.16 fixed point with wrap-around arithmetic: every box su
 compiler caps the kernel at 255 texels (255^2 * 65536 < 2^32, E0412). Centered fp32 (sums of
 v - 0.5) helps only when the values straddle 0.5; with depths near 1 it inherits most of the
 plain fp32 error: its rows are shown failing like plain fp32 (`sat_box_mean_*`; no row of this
-report is excused). The int32 box means of x and x^2 each err by up to half a quantum, so
+report is excused), and the checker's messages (E0412, W0504) no longer offer it as the precise
+alternative. The int32 box means of x and x^2 each err by up to half a quantum, so
 E[x^2] - E[x]^2 errs by up to 3 * 2^-17 = 2.3e-5, more than the default minimum variance 1e-5:
 on small and flat boxes that noise decided Chebyshev (quadtree leaves of one texel: 0.0199;
 `depth_range_0.001` VSSM: 0.061). Fix: linear moments read from an int32 SAT use a variance
@@ -44,10 +45,17 @@ gives c <= 44.4 in fp32 (we take 42), c <= ln(65504)/2 = 5.54 in fp16, and a SAT
 texels lowers the limit by ln(W^2)/2. Fix: the checker rejects exponents above the limit of the
 chosen storage (E0404, compiler/spec/precision.cpp; for fp16 the rejection is the row's check,
 the saturated moment does not change the suite's receivers); inside an fp32 SAT even the limit
-fails by cancellation (box sums of e-^2 ~ 1e36 lose a small box), so that row is shown failing
-too; the positive warp is stored as
+fails by cancellation (box sums of e-^2 ~ 1e36 lose a small box), so exponential warps in an
+fp32 SAT are a checker error at any exponent (E0420) and both rows are built past the checker
+and shown failing; the positive warp is stored as
 exp(c (d - 1)) <= 1 so it cannot overflow; the receiver depth is clamped to [0, 1] before
 warping; ESM is evaluated in log space with the exponent clamped to <= 0.
+
+**Whole-texel SAT corners** (issue 9 defect 6). A box whose corners snap to texels keeps the
+visibility of a receiver constant across a texel and jumps at its boundary (0.186 for a 9-texel
+VSM kernel, 0.538 for a VSSM penumbra box at an occluder edge, `sat_fractional_corners`). Fix:
+`sat(K, corners: bilinear)` integrates the moments under the continuous box (templates/lookup/
+sat.glsl: 3 x 3 exact region sums of 16 corners, weighted by the covered fractions).
 
 **Zero variance and the receiver at the mean** (vsm-tutorial; vssm-yang2010 eq. 1). On a flat
 occluder E[x^2] - E[x]^2 is 0 (or slightly negative after rounding) and Chebyshev divides 0 by

@@ -124,6 +124,7 @@ const std::vector<StabilityCase>& stabilityCases() {
   static const std::vector<StabilityCase> cases = [] {
     std::vector<StabilityCase> out;
     addSatCases(out);
+    addCornerCases(out);
     addEstimatorCases(out);
     addGeometryCases(out);
     addNaiveCases(out);

@@ -85,16 +85,23 @@ ivec4 shadowc_kernelRect(vec2 c, float w){
   ivec2 last = shadowc_mapSize()- 1;
   return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
 }
-#line 46
+#line 48
+vec4 shadowc_kernelBox(vec2 c, float w){
+#line 56
+  ivec4 r = shadowc_kernelRect(c, w);
+  return vec4(r . xy, r . zw + 1);
+
+}
+#line 62
 float shadowc_searchTexels(shadowc_Receiver r){
   return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
 }
-#line 52
+#line 68
 float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 58
+#line 74
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -232,33 +239,33 @@ int shadowc_layerOf(float d){
 }
 #line 45 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/moments_filter.glsl"
-#line 27
+#line 37
 vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
-#line 31
+#line 43
   return textureLod(shadowc_moments, vec3(uv, float(layer)), 0 != 0 ? log2(max(w, 1.0)): 0.0);
 
 }
-#line 36
+#line 48
 float shadowc_estimate(vec4 m, float d, float minVariance){
-#line 47
+#line 59
   return shadowc_reduceBleeding(shadowc_msm(m, d));
-#line 51
+#line 63
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 59
+#line 71
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 73
+#line 85
   return v;
 }
-#line 78
+#line 90
 float shadowc_momentsTechnique(shadowc_Receiver r){
-#line 88
+#line 100
   float w = 1.0;
 
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);

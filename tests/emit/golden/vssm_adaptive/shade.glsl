@@ -87,16 +87,23 @@ ivec4 shadowc_kernelRect(vec2 c, float w){
   ivec2 last = shadowc_mapSize()- 1;
   return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
 }
-#line 46
+#line 48
+vec4 shadowc_kernelBox(vec2 c, float w){
+#line 56
+  ivec4 r = shadowc_kernelRect(c, w);
+  return vec4(r . xy, r . zw + 1);
+
+}
+#line 62
 float shadowc_searchTexels(shadowc_Receiver r){
   return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
 }
-#line 52
+#line 68
 float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 58
+#line 74
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -189,14 +196,14 @@ float shadowc_reduceBleeding(float p){
 }
 #line 32 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/sat.glsl"
-#line 24
+#line 25
 const float shadowc_satVarianceFloor = 2.4e-5;
-#line 30
+#line 31
 uvec4 shadowc_summedCorner(int x, int y, int layer){
   if(x < 0 || y < 0)return uvec4(0u);
   return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
 }
-#line 42
+#line 43
 vec4 shadowc_summedMean(ivec4 rect, int layer){
   float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
   area = max(area, 1.0);
@@ -204,7 +211,7 @@ vec4 shadowc_summedMean(ivec4 rect, int layer){
   uvec4 sum = shadowc_summedCorner(rect . z, rect . w, layer)- shadowc_summedCorner(rect . x - 1, rect . w, layer)-
               shadowc_summedCorner(rect . z, rect . y - 1, layer)+ shadowc_summedCorner(rect . x - 1, rect . y - 1, layer);
   return vec4(sum)/(65536.0 * area);
-#line 58
+#line 59
 }
 #line 43 "lookup/shadowc_lookup.glsl"
 
@@ -248,43 +255,49 @@ vec4 shadowc_rectMoments(ivec4 rect, int layer){
   return shadowc_summedMean(rect, layer);
 #line 22
 }
-#line 27
-vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
+#line 26
+vec4 shadowc_boxMoments(vec4 box, int layer){
+#line 30
+  return shadowc_rectMoments(ivec4(box . xy, box . zw - 1.0), layer);
 
-  return shadowc_summedMean(rect, layer);
-#line 33
 }
-#line 36
+#line 37
+vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer){
+#line 41
+  return shadowc_summedMean(rect, layer);
+#line 45
+}
+#line 48
 float shadowc_estimate(vec4 m, float d, float minVariance){
-#line 39
+#line 51
   minVariance = max(minVariance, shadowc_satVarianceFloor);
 
   return shadowc_reduceBleeding(shadowc_chebyshev(m . x, m . y, d, minVariance));
-#line 51
+#line 63
 }
 
 float shadowc_layerVisibility(vec2 uv, ivec4 rect, float w, float d, int layer){
   return shadowc_estimate(shadowc_kernelMoments(uv, rect, w, layer), shadowc_layerDepth(d, layer),
                           shadowc_layerMinVariance(layer));
 }
-#line 59
+#line 71
 float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d){
   int j = shadowc_layerOf(d);
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
-#line 73
+#line 85
   return v;
 }
-#line 78
-float shadowc_momentsTechnique(shadowc_Receiver r){
-#line 85
-  float w = shadowc_searchTexels(r);
 #line 90
+float shadowc_momentsTechnique(shadowc_Receiver r){
+#line 97
+  float w = shadowc_searchTexels(r);
+#line 102
   return shadowc_filteredVisibility(r . uv, shadowc_kernelRect(r . texel, w), w, r . d);
 }
 #line 46 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/vssm.glsl"
-#line 29
-ivec4 shadowc_vRoot;
+#line 31
+vec4 shadowc_vRoot;
 float shadowc_vD;
 float shadowc_vMinVariance;
 float shadowc_aEx;
@@ -295,12 +308,12 @@ float shadowc_aPcfArea;
 float shadowc_aPcfOcc;
 float shadowc_aPcfDepth;
 
-void shadowc_vssmBegin(ivec4 root, float d){
+void shadowc_vssmBegin(vec4 root, float d){
   shadowc_vRoot = root;
   shadowc_vD = d;
 
   shadowc_vMinVariance = max(1e-05, shadowc_satVarianceFloor);
-#line 48
+#line 50
   shadowc_aEx = 0.0;
   shadowc_aEx2 = 0.0;
   shadowc_aVsmArea = 0.0;
@@ -309,19 +322,22 @@ void shadowc_vssmBegin(ivec4 root, float d){
   shadowc_aPcfOcc = 0.0;
   shadowc_aPcfDepth = 0.0;
 }
-#line 58
-ivec4 shadowc_subRect(ivec3 node){
-  ivec2 size = shadowc_vRoot . zw - shadowc_vRoot . xy + 1;
-  ivec2 lo = shadowc_vRoot . xy +(node . xy * size)/ node . z;
-  ivec2 hi = shadowc_vRoot . xy +((node . xy + 1)* size)/ node . z - 1;
-  return ivec4(lo, hi);
-}
+#line 60
+vec4 shadowc_subBox(ivec3 node){
 #line 66
+  ivec2 root = ivec2(shadowc_vRoot . xy);
+  ivec2 size = ivec2(shadowc_vRoot . zw)- root;
+  return vec4(root +(node . xy * size)/ node . z, root +((node . xy + 1)* size)/ node . z);
+
+}
+
+float shadowc_boxArea(vec4 box){ return(box . z - box . x)*(box . w - box . y);}
+#line 75
 int shadowc_qtClassify(ivec3 node){
-  ivec4 rect = shadowc_subRect(node);
-  if(rect . z < rect . x || rect . w < rect . y)return 0;
-  float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
-  vec4 m = shadowc_rectMoments(rect, 0);
+  vec4 box = shadowc_subBox(node);
+  float area = shadowc_boxArea(box);
+  if(!(area > 0.0))return 0;
+  vec4 m = shadowc_boxMoments(box, 0);
   float variance = m . y - m . x * m . x;
   if(m . x >= shadowc_vD && variance < 0.0001){
     shadowc_aLitArea += area;
@@ -335,19 +351,21 @@ int shadowc_qtClassify(ivec3 node){
   }
   return 1;
 }
-#line 86
+#line 95
 void shadowc_qtResolveLeaf(ivec3 node){
-  ivec4 rect = shadowc_subRect(node);
-  if(rect . z < rect . x || rect . w < rect . y)return;
-  float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
+  vec4 box = shadowc_subBox(node);
+  float area = shadowc_boxArea(box);
+  if(!(area > 0.0))return;
 
   const int n = 2;
-  vec2 size = vec2(rect . zw - rect . xy + 1);
+  vec2 size = box . zw - box . xy;
   float occluded = 0.0;
   float depthSum = 0.0;
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i){
-      ivec2 t = rect . xy + ivec2(floor((vec2(i, j)+ 0.5)* size / float(n)));
+#line 109
+      ivec2 t = ivec2(box . xy)+ ivec2(floor((vec2(i, j)+ 0.5)* size / float(n)));
+
       float z = shadowc_depthAt(t);
       if(z < shadowc_vD){
         occluded += 1.0;
@@ -358,28 +376,29 @@ void shadowc_qtResolveLeaf(ivec3 node){
   shadowc_aPcfArea += area;
   shadowc_aPcfOcc += occluded * scale;
   shadowc_aPcfDepth += depthSum * scale;
-#line 111
+#line 124
 }
-#line 114
+#line 127
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassify(node)== 1;}
 void shadowc_qtLeaf(ivec3 node){
   if(shadowc_qtClassify(node)== 1)shadowc_qtResolveLeaf(node);
 }
-#line 120
-void shadowc_uniformWalk(int den){
+#line 135
+void shadowc_uniformWalk(int den, bool nonPlanarOnly){
+  if(nonPlanarOnly && den > 1 && shadowc_qtClassify(ivec3(0, 0, 1))== 0)return;
   for(int j = 0;j < den;++ j)
     for(int i = 0;i < den;++ i)shadowc_qtLeaf(ivec3(i, j, den));
 }
-#line 132
+#line 148
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 135
+#line 151
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 144
+#line 160
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
   for(int step = 0;step < 85 && n . z > 0;++ step){
@@ -393,12 +412,12 @@ void shadowc_qtWalk(int height){
     n = shadowc_qtNextNode(n);
   }
 }
-#line 160
-float shadowc_vssmBlocker(ivec4 searchRect, float d){
-  shadowc_vssmBegin(searchRect, d);
-#line 169
-  shadowc_uniformWalk(5);
-#line 174
+#line 176
+float shadowc_vssmBlocker(vec4 searchBox, float d){
+  shadowc_vssmBegin(searchBox, d);
+#line 185
+  shadowc_uniformWalk(5, 0 != 0);
+#line 190
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -415,12 +434,12 @@ float shadowc_vssmBlocker(ivec4 searchRect, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 192
-float shadowc_vssmVisibility(ivec4 rect, float d){
-  shadowc_vssmBegin(rect, d);
-#line 198
+#line 208
+float shadowc_vssmVisibility(vec4 box, float d){
+  shadowc_vssmBegin(box, d);
+#line 214
   shadowc_qtWalk(3);
-#line 205
+#line 221
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -432,23 +451,23 @@ float shadowc_vssmVisibility(ivec4 rect, float d){
 }
 
 float shadowc_vssm(shadowc_Receiver r){
-  ivec4 searchRect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
-  float zb = shadowc_vssmBlocker(searchRect, r . d);
-#line 225
-  float zAvg = shadowc_rectMoments(searchRect, 0). x;
+  vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
+  float zb = shadowc_vssmBlocker(searchBox, r . d);
+#line 241
+  float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 233
+#line 249
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 242
-  return shadowc_vssmVisibility(shadowc_kernelRect(r . texel, w), r . d);
+#line 258
+  return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
 #line 54
