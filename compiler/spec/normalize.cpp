@@ -61,8 +61,7 @@ void normalize(FilterSpec& spec, const SettingsRead& given) {
   // none` asks for option 1 (lit). Without any subdivision the "sub-kernel" is the whole search
   // or penumbra box, where 2x2 samples measured worse than lit (docs/accuracy.md, issue 9 defect
   // 4), so the default stays none there.
-  const bool subdivided =
-      spec.kernel.subdivision != Subdivision::None || spec.blocker.subdivision != Subdivision::None;
+  const bool subdivided = spec.kernel.subdivision != Subdivision::None || spec.blocker.subdivision != Subdivision::None;
   if (!given.fallback && moments && spec.blocker.kind == BlockerKind::Moments && subdivided)
     spec.fallback = FallbackSpec{true, 2};
 }
