@@ -38,6 +38,8 @@ enum class Warp {
   PowerCdf,  // (min, max, mean): power-CDF shadow maps
   Msm,       // (z, z^2, z^3, z^4): Hamburger 4MSM (Peters & Klein 2015, Algorithm 3)
 };
+// The DSL's spelling of a warp (docs/dsl.md: "linear", "power_cdf", ...), for JSON and messages.
+const char* name(Warp v);
 enum class SplitPlacement { Uniform, Explicit, Lloyd };
 struct MomentsSpec {
   Warp warp = Warp::Linear;
@@ -50,7 +52,7 @@ struct MomentsSpec {
   double minVariance = 1e-5;       // VSM minimum variance (per layer when layered)
   double bleedingReduction = 0.0;  // 0 = off; else Lauritzen's linstep(amount, 1, p)
   int lloydIterations = 8;         // for SplitPlacement::Lloyd (needs scene histogram)
-  double momentBias = 3e-5;       // Msm: alpha of b' = (1 - alpha) b + alpha b* (Algorithm 3)
+  double momentBias = 3e-5;        // Msm: alpha of b' = (1 - alpha) b + alpha b* (Algorithm 3)
 };
 
 // ---- storage -----------------------------------------------------------------------------
