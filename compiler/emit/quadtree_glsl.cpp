@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include <stdexcept>
+#include "plan/internal_error.h"
 
 namespace shadowc {
 
@@ -47,7 +47,7 @@ void emitUnrolledNode(std::string& out, int height, int level, int ix, int iy, i
 
 std::string emitUnrolledQuadtreeGlsl(int height, std::string_view functionName, std::string_view visitFn,
                                      std::string_view leafFn) {
-  if (height < 0 || height > 6) throw std::invalid_argument(fmt::format("quadtree height {} not in [0, 6]", height));
+  if (height < 0 || height > 6) throw InternalError(fmt::format("quadtree height {} not in [0, 6]", height));  // E0314
   std::string out;
   out += fmt::format("// Algorithm 2 (vssm-yang2010) unrolled for height {}: pre-order, children skipped when the\n",
                      height);

@@ -3,7 +3,7 @@
 
 #include <fmt/format.h>
 
-#include <stdexcept>
+#include "plan/internal_error.h"
 
 namespace shadowc {
 
@@ -54,7 +54,7 @@ void linkNext(QuadtreeTables& t, int index) {
 }  // namespace
 
 QuadtreeTables buildQuadtreeTables(int height) {
-  if (height < 0 || height > 6) throw std::invalid_argument(fmt::format("quadtree height {} not in [0, 6]", height));
+  if (height < 0 || height > 6) throw InternalError(fmt::format("quadtree height {} not in [0, 6]", height));  // E0314
   QuadtreeTables t;
   t.height = height;
   t.nodes.reserve(static_cast<size_t>(quadtreeNodeCount(height)));

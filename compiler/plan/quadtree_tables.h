@@ -36,7 +36,7 @@ struct QuadtreeTables {
 // Number of nodes of a full quadtree of height H: (4^(H+1) - 1) / 3.
 int quadtreeNodeCount(int height);
 
-// Builds the tables; height in [0, 6] (throws std::invalid_argument otherwise).
+// Builds the tables; height in [0, 6] (the checker enforces 1..5, E0314; InternalError otherwise).
 QuadtreeTables buildQuadtreeTables(int height);
 
 // The walk the GPU does (vssm.glsl): returns the visited node indices in order. `descend(i)` is

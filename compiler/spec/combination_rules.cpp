@@ -107,24 +107,6 @@ struct Rule {
   void (*args)(const Facts&, Args&) = nullptr;  // nullptr: the message takes no arguments
 };
 
-const char* warpName(Warp w) {
-  switch (w) {
-    case Warp::Linear:
-      return "linear";
-    case Warp::Exp:
-      return "exp";
-    case Warp::Evsm2:
-      return "evsm2";
-    case Warp::Evsm4:
-      return "evsm4";
-    case Warp::PowerCdf:
-      return "power_cdf";
-    case Warp::Msm:
-      return "msm";
-  }
-  return "linear";
-}
-
 template <typename... T>
 void push(Args& a, const T&... v) {
   (a.push_back(v), ...);
@@ -192,7 +174,7 @@ const Rule kRules[] = {
     // ---- VSSM reads one plain (z, z^2) map (vssm-yang2010 sec. 4.2, eq. 4) ---------------------
     {DiagId::vssmNeedsLinearWarp, Caret::Representation,
      [](const Facts& f) { return f.vssm() && f.s.moments.warp != Warp::Linear; },
-     [](const Facts& f, Args& a) { push(a, warpName(f.s.moments.warp)); }},
+     [](const Facts& f, Args& a) { push(a, shadowc::name(f.s.moments.warp)); }},
     {DiagId::vssmNeedsOneLayer, Caret::LayersElseRepresentation,
      [](const Facts& f) { return f.vssm() && f.s.moments.layers > 1; },
      [](const Facts& f, Args& a) { push(a, f.s.moments.layers); }},

@@ -8,19 +8,6 @@
 #include "spec/load_filter.h"
 
 namespace shadowc {
-namespace {
-const char* name(LightShape v) {
-  switch (v) {
-    case LightShape::Rect:
-      return "area";
-    case LightShape::Disk:
-      return "disk";
-    case LightShape::Point:
-      return "point";
-  }
-  return "?";
-}
-const char* name(Representation v) { return v == Representation::Depth ? "depth" : "moments"; }
 const char* name(Warp v) {
   switch (v) {
     case Warp::Linear:
@@ -38,6 +25,20 @@ const char* name(Warp v) {
   }
   return "?";
 }
+
+namespace {
+const char* name(LightShape v) {
+  switch (v) {
+    case LightShape::Rect:
+      return "area";
+    case LightShape::Disk:
+      return "disk";
+    case LightShape::Point:
+      return "point";
+  }
+  return "?";
+}
+const char* name(Representation v) { return v == Representation::Depth ? "depth" : "moments"; }
 const char* name(SplitPlacement v) {
   switch (v) {
     case SplitPlacement::Uniform:

@@ -52,6 +52,8 @@ enum class Warp {
   PowerCdf,  // (min, max, mean): power-CDF shadow maps
   Msm,       // (z, z^2, z^3, z^4): Hamburger 4MSM (Peters & Klein 2015, Algorithm 3)
 };
+// The DSL's spelling of a warp (docs/dsl.md: "linear", "power_cdf", ...), for JSON and messages.
+const char* name(Warp v);
 enum class SplitPlacement { Uniform, Explicit, Lloyd };
 struct MomentsSpec {
   Warp warp = Warp::Linear;

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "emit/quadtree_glsl.h"
+#include "plan/internal_error.h"
 
 namespace shadowc {
 namespace {
@@ -82,7 +83,7 @@ TEST(QuadtreeTables, NodeCountsAndShape) {
     EXPECT_EQ(leaves, 1 << (2 * h));
     EXPECT_EQ(t.nodes[0].next, -1);
   }
-  EXPECT_THROW(buildQuadtreeTables(7), std::invalid_argument);
+  EXPECT_THROW(buildQuadtreeTables(7), InternalError);
 }
 
 TEST(QuadtreeTables, ExhaustiveDecisionPatternsMatchRecursionForHeights1And2) {
@@ -217,6 +218,8 @@ TEST(QuadtreeTables, UnrolledCodeIsStraightLineAndEquivalentToTheWalk) {
       ASSERT_EQ(interpretUnrolled(code, d), tableWalk(t, d)) << "height " << h;
     }
   }
+  // The checker bounds the height (E0314); past it, a height out of range is a shadowc bug.
+  EXPECT_THROW(emitUnrolledQuadtreeGlsl(7, "walk", "visit", "leaf"), InternalError);
 }
 
 TEST(QuadtreeTables, GlslTablesListEveryNode) {
