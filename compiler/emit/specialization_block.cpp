@@ -35,11 +35,12 @@ std::string renderTable(const Table& table) {
 
 // The generic shader's uniform block (plan/generic_block.h), its members at the manifest's
 // offsets, and one alias per member so that the template reads the uniform where it read the
-// constant. SHADOWC_CONST drops `const` from the few locals initialized from an option.
+// constant. (The few `const int n = SHADOWC_X;` locals stay legal: GLSL 4.20+ allows a const
+// local with a non-constant initializer.)
 std::string renderParameters(const ParameterBlock& b) {
   std::string out = fmt::format(
       "// generic: the options below are uniforms the runtime fills from manifest.json \"parameters\"\n"
-      "#define SHADOWC_CONST\n#ifndef SHADOWC_SET\n#define SHADOWC_SET 0\n#endif\n"
+      "#ifndef SHADOWC_SET\n#define SHADOWC_SET 0\n#endif\n"
       "#ifndef SHADOWC_BINDING_PARAMETERS\n#define SHADOWC_BINDING_PARAMETERS {}\n#endif\n"
       "layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_PARAMETERS, std140) uniform shadowc_GenericBlock {{\n",
       b.binding);

@@ -32,12 +32,6 @@
 #define SHADOWC_BIAS_SLOPE_SCALED_KIND 1
 #define SHADOWC_BIAS_NORMAL_OFFSET_KIND 2
 
-// `const` on locals initialized from an option; the generic shader (compile --generic,
-// compiler/plan/generic_block.h) defines it empty, its options being uniforms.
-#ifndef SHADOWC_CONST
-#define SHADOWC_CONST const
-#endif
-
 // ---- resources ------------------------------------------------------------------------------
 #ifndef SHADOWC_SET
 #define SHADOWC_SET 0  // descriptor set of bindings 4..8 (engines may move them)

@@ -61,7 +61,7 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d) {
   float v = shadowc_layerVisibility(uv, rect, w, d, j);
 #if SHADOWC_LAYER_BLEND
   // Transition regions of width 2 delta around each split (lauritzen2008 sec. 5).
-  SHADOWC_CONST float delta = SHADOWC_OVERLAP;
+  const float delta = SHADOWC_OVERLAP;
   if (j + 1 < SHADOWC_LAYERS && d > shadowc_split(j + 1) - delta) {
     float t = clamp((d - (shadowc_split(j + 1) - delta)) / (2.0 * delta), 0.0, 1.0);
     v = mix(v, shadowc_layerVisibility(uv, rect, w, d, j + 1), t);

@@ -26,7 +26,7 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
     }
   }
 #else
-  SHADOWC_CONST int n = SHADOWC_BLOCKER_GRID_N;
+  const int n = SHADOWC_BLOCKER_GRID_N;
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       vec2 pos = r.texel + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));

@@ -77,7 +77,7 @@ ivec4 shadowc_influenceRect(shadowc_Receiver r) {
   ivec4 rect = shadowc_kernelRect(r.texel, SHADOWC_KERNEL_FIXED_TEXELS);
 #endif
   ivec2 last = shadowc_mapSize() - 1;
-  SHADOWC_CONST int grow = 1 + SHADOWC_EARLY_OUT_GROW;
+  const int grow = 1 + SHADOWC_EARLY_OUT_GROW;
   return ivec4(max(rect.xy - grow, ivec2(0)), min(rect.zw + grow, last));
 }
 #endif

@@ -88,7 +88,7 @@ void shadowc_qtResolveLeaf(ivec3 node) {
   if (rect.z < rect.x || rect.w < rect.y) return;
   float area = float((rect.z - rect.x + 1) * (rect.w - rect.y + 1));
 #if SHADOWC_FALLBACK_PCF
-  SHADOWC_CONST int n = SHADOWC_FALLBACK_N;
+  const int n = SHADOWC_FALLBACK_N;
   vec2 size = vec2(rect.zw - rect.xy + 1);
   float occluded = 0.0;
   float depthSum = 0.0;
