@@ -68,8 +68,8 @@ TEST(Generic, OptionsAndTablesBecomeABlockTheManifestRecords) {
   // The shader reads the block where the specialized one has literals; no macro is left.
   const std::string& glsl = *a.file("shade.glsl");
   EXPECT_NE(glsl.find("uniform shadowc_GenericBlock"), std::string::npos);
-  EXPECT_NE(glsl.find("shadowc_generic.pcfTaps"), std::string::npos);
-  EXPECT_NE(glsl.find("shadowc_generic.poissonPcf["), std::string::npos);
+  EXPECT_NE(glsl.find("shadowc_generic . pcfTaps"), std::string::npos);
+  EXPECT_NE(glsl.find("shadowc_generic . poissonPcf["), std::string::npos);
   EXPECT_EQ(glsl.find("#define"), std::string::npos);
   // The specialized twin has none of it (the sibling: the checks above can fail).
   const driver::Artifact s = compile(pcfPoisson(16, 0.001), false);
@@ -121,7 +121,7 @@ TEST(Generic, TheLookupDeclaresTheBlockWhereThePlacementSays) {
   const driver::Result r = driver::compileSource(pcfPoisson(16, 0.001), "pcf_g.shadow", o);
   ASSERT_TRUE(r.ok) << r.log;
   const std::string& lookup = *r.artifact->file("pcf_g_lookup.glsl");
-  EXPECT_NE(lookup.find("layout(set = 2, binding = 19, std140) uniform shadowc_GenericBlock"), std::string::npos)
+  EXPECT_NE(lookup.find("layout(set = 2, binding = 19, std140)uniform shadowc_GenericBlock"), std::string::npos)
       << lookup.substr(0, 1500);
   const auto& sb = r.artifact->manifest.shade.bindings;
   EXPECT_TRUE(std::any_of(sb.begin(), sb.end(),
