@@ -32,6 +32,7 @@ struct CompileArgs {
   bool depsFile = false;      // -MD
   std::string depsTarget;     // -MT: the rule's target instead of the outputs
   bool werror = false;
+  bool generic = false;  // --generic
   uint32_t lookupSet = 0, lookupBindingBase = 0;
 };
 
@@ -92,6 +93,10 @@ int run(CompileArgs& a, CLI::App& sub) {
   if (a.lookupBindingBase > kMaxLookupBindingBase)
     return error("--lookup-binding-base: at most " + std::to_string(kMaxLookupBindingBase));
   options.lookup = {a.lookupSet, a.lookupBindingBase};
+  options.generic = a.generic;
+  if (a.generic && kinds.count(driver::OutputKind::CppHeader))
+    return error(
+        "--generic with --emit cpp: the C++ header does not carry the parameter block yet (use manifest.json)");
   for (driver::OutputKind k : {driver::OutputKind::Hlsl, driver::OutputKind::Msl, driver::OutputKind::CppHeader})
     if (kinds.count(k)) options.engineOutputs.insert(k);
   if (a.outputDir.empty())
@@ -152,6 +157,9 @@ CommandRunner registerCompile(CLI::App& app) {
                   "descriptor set of everything <filter>_lookup.glsl declares (default 0; manifest shade.set)");
   sub->add_option("--lookup-binding-base", args->lookupBindingBase,
                   "added to every binding <filter>_lookup.glsl declares (default 0: the shade pass's own)");
+  sub->add_flag("--generic", args->generic,
+                "emit the shade pass as one generic shader: numeric options and tables in a uniform block "
+                "filled from manifest.json \"parameters\", loops dynamic (docs/cli.md)");
   sub->add_flag("--print-spec", args->printSpec, "print the normalized FilterSpec as JSON and stop (unless -o)");
   sub->add_flag("--print-plan", args->printPlan,
                 "print the pass graph (images, passes, every specialization value) and stop (unless -o)");

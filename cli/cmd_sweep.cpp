@@ -16,6 +16,7 @@
 #include "sweep/frontier_table.h"
 #include "sweep/merge.h"
 #include "sweep/outputs.h"
+#include "sweep/shader_ratio.h"
 #include "sweep/sweep_run.h"
 #include "sweep/sweep_spec.h"
 
@@ -45,6 +46,7 @@ int finish(const sweep::Results& r, const std::filesystem::path& dir) {
   const std::string warning = sweep::writeOutputs(dir, r);
   std::fflush(stderr);
   fmt::print("{}", sweep::formatFrontierTables(r));
+  fmt::print("{}", sweep::formatShaderRatios(r));
   fmt::print("sweep: {} rows ({} ran, {} cached), {} skipped -> {}/results.csv, results.json, report.html{}\n",
              r.rows.size(), r.stats.ran, r.stats.cached, r.skipped.size(), dir.string(),
              warning.empty() ? ", plots/" : "");

@@ -6,6 +6,7 @@
 #include <set>
 
 #include "sweep/pareto.h"
+#include "sweep/shader_ratio.h"
 
 namespace shadowc::sweep {
 namespace {
@@ -135,6 +136,22 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
     for (size_t i : members)
       h += fmt::format("<tr><td>{}</td>{}</tr>\n", onFrontier.count(i) ? "&#9733;" : "", rowCells(res.rows[i]));
     h += "</table>\n</details>\n</section>\n";
+  }
+  if (const std::vector<ShaderPair> pairs = shaderPairs(res.rows); !pairs.empty()) {
+    h += "<h2>Specialized vs generic</h2>\n<p>The same variant compiled by <code>shadowc compile</code> and by "
+         "<code>shadowc compile --generic</code> (options as uniforms, dynamic loops), on the same case. Ratio = "
+         "specialized &divide; generic frame time: below 1, specialization buys time.</p>\n";
+    h += "<table class=\"ratios\">\n<tr><th>case</th><th>variant</th><th>specialized ms</th><th>generic "
+         "ms</th><th>ratio</th><th>rmse specialized</th><th>rmse generic</th></tr>\n";
+    for (const ShaderPair& p : pairs) {
+      const Row& sp = res.rows[p.specialized];
+      const Row& g = res.rows[p.generic];
+      h += fmt::format(
+          "<tr class=\"ratio-row\"><td>{}</td><td>{}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.3f}</td><td>{:.5f}</td>"
+          "<td>{:.5f}</td></tr>\n",
+          esc(sp.caseLabel), esc(sp.variant), sp.totalMs, g.totalMs, p.ratio, sp.metrics.rmse, g.metrics.rmse);
+    }
+    h += "</table>\n";
   }
   if (!res.skipped.empty()) {
     std::map<std::string, size_t> byCode;

@@ -8,6 +8,7 @@
 
 #include "runtime/images/atomic_file.h"
 #include "sweep/pareto.h"
+#include "sweep/shader_ratio.h"
 
 namespace shadowc::sweep {
 namespace {
@@ -144,9 +145,11 @@ std::string resultsJson(const Results& res) {
   j["skipped"] = std::move(skipped);
   j["frontier"] = std::move(f);
   ordered_json rows = ordered_json::array();
+  const std::vector<ShaderPair> pairs = shaderPairs(res.rows);
   for (size_t i = 0; i < res.rows.size(); ++i) {
     ordered_json row = rowToJson(res.rows[i]);
     row["frontier"] = bool(onFrontier[i]);
+    if (const std::optional<double> ratio = pairedRatio(pairs, i)) row["specialized_over_generic"] = *ratio;
     rows.push_back(std::move(row));
   }
   j["rows"] = std::move(rows);
@@ -190,18 +193,21 @@ std::string resultsCsv(const Results& res) {
     for (size_t i : members) onFrontier[i] = true;
   std::string out =
       "case,scene,screen,map,variant,base,shader,params,total_ms,rmse,mae,max_abs_error,p99_abs_error,light_bleeding,"
-      "over_darkening,non_finite,frontier,passes_ms,content_hash,key,spec\n";
+      "over_darkening,non_finite,frontier,passes_ms,content_hash,key,spec,specialized_over_generic\n";
+  const std::vector<ShaderPair> pairs = shaderPairs(res.rows);
   for (size_t i = 0; i < res.rows.size(); ++i) {
     const Row& r = res.rows[i];
     std::string params, passes;
     for (const auto& [k, v] : r.params) params += (params.empty() ? "" : ";") + k + "=" + v;
     for (const auto& p : r.passes) passes += fmt::format("{}{}={:.4f}", passes.empty() ? "" : ";", p.name, p.medianMs);
     const rt::Metrics& m = r.metrics;
-    out += fmt::format("{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{}\n",
-                       csvField(r.caseLabel), csvField(r.scene), r.screen, r.map, csvField(r.variant), csvField(r.base),
-                       r.shader, csvField(params), r.totalMs, m.rmse, m.mae, m.maxAbsError, m.p99AbsError,
-                       m.lightBleeding, m.overDarkening, m.nonFinite, onFrontier[i] ? 1 : 0, csvField(passes),
-                       r.contentHash, r.key, csvField(r.spec.dump()));
+    const std::optional<double> ratio = pairedRatio(pairs, i);
+    out +=
+        fmt::format("{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{},{}\n",
+                    csvField(r.caseLabel), csvField(r.scene), r.screen, r.map, csvField(r.variant), csvField(r.base),
+                    r.shader, csvField(params), r.totalMs, m.rmse, m.mae, m.maxAbsError, m.p99AbsError, m.lightBleeding,
+                    m.overDarkening, m.nonFinite, onFrontier[i] ? 1 : 0, csvField(passes), r.contentHash, r.key,
+                    csvField(r.spec.dump()), ratio ? fmt::format("{:.4f}", *ratio) : "");
   }
   return out;
 }

@@ -43,9 +43,8 @@ struct Row {
 struct Skipped {
   size_t variantIndex = 0;
   std::string variant;
-  // The checker's diagnostic code (E0416 ...), or the sweep's own (docs/sweep.md "Skipped"): SW001
-  // generic shader (not implemented), SW002 the run failed, SW003 compile failed without a
-  // diagnostic, SW004 the map is larger than the filter's map_size.
+  // The checker's diagnostic code (E0416 ...), or the sweep's own (docs/sweep.md "Skipped"): SW002 the run failed,
+  // SW003 compile failed without a diagnostic, SW004 the map is larger than the filter's map_size.
   std::string code;
   std::string message;  // its first error, in glslc form without the caret lines
 };

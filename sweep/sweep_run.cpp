@@ -89,10 +89,6 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
       std::string code;
       const std::string message = firstError(r.diagnostics, &code);
       ch.skipped = Skipped{v.index, v.label, code, message};
-    } else if (v.shader == ShaderKind::Generic) {
-      ch.skipped = Skipped{v.index, v.label, "SW001",
-                           "generic shaders (options as uniforms, dynamic loops) are not implemented yet: "
-                           "`shadowc compile --generic` (issue 11 item 4)"};
     } else {
       ch.spec = *r.spec;
       ch.specJson = specToJson(*r.spec);
@@ -154,7 +150,9 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
       for (size_t i; (i = next++) < toCompile.size();) {
         const Variant& v = e.variants[toCompile[i]];
         Compiled& out = compiled.at(v.index);
-        const driver::Result r = driver::compileSource(v.text, v.label);
+        driver::Options opt;
+        opt.generic = v.shader == ShaderKind::Generic;  // `shadowc compile --generic`
+        const driver::Result r = driver::compileSource(v.text, v.label, opt);
         if (r.ok && r.artifact) {
           out.passes = r.artifact->passes();
           out.contentHash = r.artifact->manifest.contentHash;

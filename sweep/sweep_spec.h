@@ -44,9 +44,9 @@ struct SceneEntry {
   std::optional<double> lightSize;
 };
 
-// How each variant is built: the specialized shader shadowc emits today, or the generic one
-// (options as uniforms, dynamic loops; issue 11 item 4) that does not exist yet: generic
-// variants are skipped with code SW001 until `shadowc compile --generic` lands.
+// How each variant is built: the specialized shader (`shadowc compile`) or the generic one
+// (`shadowc compile --generic`: options as uniforms, dynamic loops; plan/generic_block.h).
+// With both, each pair's frame-time ratio is reported (sweep/shader_ratio.h).
 enum class ShaderKind { Specialized, Generic };
 const char* shaderKindName(ShaderKind kind);
 

@@ -10,6 +10,7 @@
 #include "emit/cross_outputs.h"
 #include "emit/filter_emitter.h"
 #include "emit/output_writer.h"
+#include "plan/generic_block.h"
 #include "plan/planner.h"
 #include "spec/print_filter.h"
 
@@ -77,6 +78,7 @@ Result finish(const LoadResult& loaded, const Options& options) {
   }
   try {
     r.plan = planPasses(spec);
+    if (options.generic) makeGeneric(*r.plan);
   } catch (const std::exception& e) {
     r.log += locatedError(spec, e.what());
     return r;

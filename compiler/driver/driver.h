@@ -42,6 +42,9 @@ struct Options {
   // rightly rejects (an EVSM exponent past the storage limit) to show it failing.
   bool checkBuiltSpec = true;
   LookupPlacement lookup;  // --lookup-set / --lookup-binding-base (emit/lookup_interface.h)
+  // --generic: the shade pass as engines usually ship it, its numeric options and tables in a
+  // uniform block the runtime fills from the manifest, its loops dynamic (plan/generic_block.h).
+  bool generic = false;
   std::set<OutputKind> engineOutputs;  // any of Hlsl, Msl, CppHeader (emit/cross_outputs.h, emit/cpp_header.h)
 };
 

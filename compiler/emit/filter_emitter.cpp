@@ -23,8 +23,8 @@ constexpr const char* kDefaultSignature = "float shadowc_visibility(vec3 worldPo
 // #version and #line (an engine #includes it into its own shader after its #version line).
 // The frame block is left out of the preprocessed body (SHADOWC_FRAME_EXTERNAL) and appended
 // inside its own #ifndef, so the engine's macro still decides (lookup_interface.h).
-bool emitLookup(const FilterSpec& spec, const Specialization& lookup, const LookupLayout& layout,
-                std::string& text, std::string& log) {
+bool emitLookup(const FilterSpec& spec, const Specialization& lookup, const LookupLayout& layout, std::string& text,
+                std::string& log) {
   const std::string wrapper = std::string("#version 460\n#extension GL_GOOGLE_include_directive : require\n") +
                               layout.defines + "#define SHADOWC_FRAME_EXTERNAL 1\n" + kSpecializeMarker +
                               "\n#include \"" + kLookupEntry + "\"\n";
@@ -98,7 +98,8 @@ FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, c
     result.files.push_back({stem + ".spv", spirvBytes(sh.spirv)});
   }
 
-  const auto shadePass = std::find_if(m.passes.begin(), m.passes.end(), [](const Pass& p) { return p.name == "shade"; });
+  const auto shadePass =
+      std::find_if(m.passes.begin(), m.passes.end(), [](const Pass& p) { return p.name == "shade"; });
   if (shadePass == m.passes.end()) throw InternalError("the pass graph of '" + spec.name + "' has no pass named shade");
   LookupLayout layout;
   if (!lookupLayout(*shadePass, options.lookup, layout, result.log)) return result;
@@ -114,7 +115,13 @@ FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, c
   m.shade.signature = signatureOf(lookupText);
   m.shade.set = options.lookup.set;
   m.shade.bindings = layout.bindings;
-  m.contentHash = contentHash(result.files);
+  // A generic shader is the same for many filters: its values (the manifest's parameter block)
+  // are hashed too, as a pseudo-file, so that the hash still tells two filters apart.
+  std::vector<EmittedFile> hashed = result.files;
+  if (shadePass->parameters)
+    hashed.push_back(
+        {"manifest.json:parameters", toJson(m)["passes"][size_t(shadePass - m.passes.begin())]["parameters"].dump()});
+  m.contentHash = contentHash(hashed);
   result.files.push_back({kManifestFile, toJson(m).dump(2) + "\n"});
   std::sort(result.files.begin(), result.files.end(),
             [](const EmittedFile& a, const EmittedFile& b) { return a.name < b.name; });

@@ -15,12 +15,13 @@ namespace {
 // The image names the lookup declares (docs/manifest.md "Images (fixed names)") and the macro
 // of templates/frame_block.glsl / lookup/defaults.glsl that places each.
 constexpr std::pair<const char*, const char*> kMacros[] = {
-    {"frame", "SHADOWC_BINDING_FRAME"},     {"shadow_depth", "SHADOWC_BINDING_DEPTH"},
-    {"moments", "SHADOWC_BINDING_MOMENTS"}, {"sat", "SHADOWC_BINDING_SAT"},
-    {"minmax", "SHADOWC_BINDING_MINMAX"},   {"splits", "SHADOWC_BINDING_SPLITS"}};
+    {"frame", "SHADOWC_BINDING_FRAME"},          {"shadow_depth", "SHADOWC_BINDING_DEPTH"},
+    {"moments", "SHADOWC_BINDING_MOMENTS"},      {"sat", "SHADOWC_BINDING_SAT"},
+    {"minmax", "SHADOWC_BINDING_MINMAX"},        {"splits", "SHADOWC_BINDING_SPLITS"},
+    {"parameters", "SHADOWC_BINDING_PARAMETERS"}};  // generic shaders (plan/generic_block.h)
 
 bool isLookupResource(const Binding& b) {
-  return b.image == "frame" || b.access == Access::Sampled;  // the G-buffer and output are storage images
+  return b.access == Access::Uniform || b.access == Access::Sampled;  // the G-buffer and output are storage images
 }
 
 const char* macroOf(const std::string& image) {

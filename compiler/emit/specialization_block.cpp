@@ -33,8 +33,36 @@ std::string renderTable(const Table& table) {
   return std::visit(Render{}, table);
 }
 
+// The generic shader's uniform block (plan/generic_block.h), its members at the manifest's
+// offsets, and one alias per member so that the template reads the uniform where it read the
+// constant. (The few `const int n = SHADOWC_X;` locals stay legal: GLSL 4.20+ allows a const
+// local with a non-constant initializer.)
+std::string renderParameters(const ParameterBlock& b) {
+  std::string out = fmt::format(
+      "// generic: the options below are uniforms the runtime fills from manifest.json \"parameters\"\n"
+      "#ifndef SHADOWC_SET\n#define SHADOWC_SET 0\n#endif\n"
+      "#ifndef SHADOWC_BINDING_PARAMETERS\n#define SHADOWC_BINDING_PARAMETERS {}\n#endif\n"
+      "layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_PARAMETERS, std140) uniform shadowc_GenericBlock {{\n",
+      b.binding);
+  for (const BlockMember& m : b.members) {
+    const char* scalar = m.type == ScalarType::F32 ? "float" : m.type == ScalarType::I32 ? "int" : "uint";
+    const std::string type = m.components == 1 ? scalar
+                                               : fmt::format("{}vec{}",
+                                                             m.type == ScalarType::F32   ? ""
+                                                             : m.type == ScalarType::I32 ? "i"
+                                                                                         : "u",
+                                                             m.components);
+    out += fmt::format("  layout(offset = {}) {} {}{};\n", m.offset, type, m.name,
+                       m.stride ? fmt::format("[{}]", m.count) : std::string());
+  }
+  out += "} shadowc_generic;\n";
+  for (const BlockMember& m : b.members) out += fmt::format("#define {} shadowc_generic.{}\n", m.macro, m.name);
+  return out;
+}
+
 std::string specializationBlock(const Specialization& s, int markerLine) {
   std::string out = "// shadowc specialization (generated)\n";
+  if (s.parameters) out += renderParameters(*s.parameters);
   for (const Constant& c : s.constants) out += fmt::format("#define {} {}\n", c.name, glslValue(c.value));
   for (const Table& t : s.tables) out += renderTable(t);
   out += fmt::format("#line {}\n", markerLine + 1);

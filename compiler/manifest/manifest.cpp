@@ -1,6 +1,8 @@
 #include "manifest/manifest.h"
 
 #include <algorithm>
+#include <bit>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 
@@ -17,21 +19,28 @@ E parseEnum(const nlohmann::json& j, const char* field, const std::array<std::pa
   throw ManifestError(std::string("manifest: unknown value '") + v + "' for field '" + field + "'");
 }
 
-constexpr std::array<std::pair<ImageFormat, const char*>, 12> kFormats{{
-    {ImageFormat::R32F, "r32f"}, {ImageFormat::RG32F, "rg32f"}, {ImageFormat::RGBA32F, "rgba32f"},
-    {ImageFormat::R16F, "r16f"}, {ImageFormat::RG16F, "rg16f"}, {ImageFormat::RGBA16F, "rgba16f"},
-    {ImageFormat::R16Unorm, "r16"}, {ImageFormat::RG16Unorm, "rg16"}, {ImageFormat::RGBA16Unorm, "rgba16"},
-    {ImageFormat::R32UI, "r32ui"}, {ImageFormat::RG32UI, "rg32ui"}, {ImageFormat::RGBA32UI, "rgba32ui"}}};
+constexpr std::array<std::pair<ImageFormat, const char*>, 12> kFormats{{{ImageFormat::R32F, "r32f"},
+                                                                        {ImageFormat::RG32F, "rg32f"},
+                                                                        {ImageFormat::RGBA32F, "rgba32f"},
+                                                                        {ImageFormat::R16F, "r16f"},
+                                                                        {ImageFormat::RG16F, "rg16f"},
+                                                                        {ImageFormat::RGBA16F, "rgba16f"},
+                                                                        {ImageFormat::R16Unorm, "r16"},
+                                                                        {ImageFormat::RG16Unorm, "rg16"},
+                                                                        {ImageFormat::RGBA16Unorm, "rgba16"},
+                                                                        {ImageFormat::R32UI, "r32ui"},
+                                                                        {ImageFormat::RG32UI, "rg32ui"},
+                                                                        {ImageFormat::RGBA32UI, "rgba32ui"}}};
 constexpr std::array<std::pair<ImageRole, const char*>, 5> kRoles{{{ImageRole::Internal, "internal"},
                                                                    {ImageRole::InputDepth, "input_depth"},
                                                                    {ImageRole::InputPosition, "input_position"},
                                                                    {ImageRole::InputNormal, "input_normal"},
                                                                    {ImageRole::OutputVisibility, "output_visibility"}}};
 constexpr std::array<std::pair<Access, const char*>, 5> kAccess{{{Access::Sampled, "sampled"},
-                                                                {Access::StorageRead, "storage_read"},
-                                                                {Access::StorageWrite, "storage_write"},
-                                                                {Access::StorageReadWrite, "storage_read_write"},
-                                                                {Access::Uniform, "uniform"}}};
+                                                                 {Access::StorageRead, "storage_read"},
+                                                                 {Access::StorageWrite, "storage_write"},
+                                                                 {Access::StorageReadWrite, "storage_read_write"},
+                                                                 {Access::Uniform, "uniform"}}};
 constexpr std::array<std::pair<DispatchMode, const char*>, 3> kModes{
     {{DispatchMode::Texels, "texels"}, {DispatchMode::Rows, "rows"}, {DispatchMode::Columns, "columns"}}};
 constexpr std::array<std::pair<ScalarType, const char*>, 3> kScalars{
@@ -91,7 +100,73 @@ Binding bindingFromJson(const nlohmann::json& j) {
   return b;
 }
 
+nlohmann::ordered_json parametersJson(const ParameterBlock& b) {
+  nlohmann::ordered_json j;
+  j["binding"] = b.binding;
+  j["size"] = b.size;
+  auto& ms = j["members"] = nlohmann::ordered_json::array();
+  for (const BlockMember& m : b.members)
+    ms.push_back({{"name", m.name},
+                  {"macro", m.macro},
+                  {"type", nameOf(m.type, kScalars)},
+                  {"offset", m.offset},
+                  {"stride", m.stride},
+                  {"count", m.count},
+                  {"components", m.components},
+                  {"values", m.values}});
+  return j;
+}
+
+// Every member must fit the block: the runtime writes these bytes without asking the shader.
+ParameterBlock parametersFromJson(const nlohmann::json& j, const std::string& pass) {
+  ParameterBlock b;
+  b.binding = get<uint32_t>(j, "binding");
+  b.size = get<uint32_t>(j, "size");
+  if (b.size == 0 || b.size > 65536 || b.size % 16)
+    throw ManifestError("manifest: pass '" + pass + "': parameter block size must be a multiple of 16 in [16, 65536]");
+  for (const auto& e : field(j, "members")) {
+    BlockMember m;
+    m.name = get<std::string>(e, "name");
+    m.macro = get<std::string>(e, "macro");
+    m.type = parseEnum(e, "type", kScalars);
+    m.offset = get<uint32_t>(e, "offset");
+    m.stride = get<uint32_t>(e, "stride");
+    m.count = get<uint32_t>(e, "count");
+    m.components = get<uint32_t>(e, "components");
+    m.values = get<std::vector<double>>(e, "values");
+    const uint64_t elementBytes = 4ull * m.components;
+    const uint64_t end = m.offset + uint64_t(m.count ? m.count - 1 : 0) * m.stride + elementBytes;
+    if (m.count == 0 || m.components == 0 || m.components > 4 || m.offset % 4 ||
+        (m.count > 1 && m.stride < elementBytes) || end > b.size || m.values.size() > uint64_t(m.count) * m.components)
+      throw ManifestError("manifest: pass '" + pass + "': parameter '" + m.name + "' does not fit the block");
+    b.members.push_back(std::move(m));
+  }
+  return b;
+}
+
 }  // namespace
+
+void writeParameterBytes(const ParameterBlock& block, std::vector<uint8_t>& bytes) {
+  bytes.assign(block.size, 0);
+  for (const BlockMember& m : block.members)
+    for (size_t i = 0; i < m.values.size(); ++i) {
+      const size_t at = m.offset + (i / m.components) * m.stride + (i % m.components) * 4;
+      if (at + 4 > bytes.size()) throw ManifestError("manifest: parameter '" + m.name + "' does not fit the block");
+      uint32_t bits = 0;
+      switch (m.type) {
+        case ScalarType::U32:
+          bits = uint32_t(m.values[i]);
+          break;
+        case ScalarType::I32:
+          bits = std::bit_cast<uint32_t>(int32_t(m.values[i]));
+          break;
+        case ScalarType::F32:
+          bits = std::bit_cast<uint32_t>(float(m.values[i]));
+          break;
+      }
+      std::memcpy(bytes.data() + at, &bits, 4);
+    }
+}
 
 const char* toString(ImageFormat f) { return nameOf(f, kFormats); }
 const char* toString(ImageRole r) { return nameOf(r, kRoles); }
@@ -102,12 +177,24 @@ const char* toString(SizeDomain d) { return nameOf(d, kDomains); }
 
 uint32_t bytesPerTexel(ImageFormat f) {
   switch (f) {
-    case ImageFormat::R32F: case ImageFormat::R32UI: return 4;
-    case ImageFormat::RG32F: case ImageFormat::RG32UI: return 8;
-    case ImageFormat::RGBA32F: case ImageFormat::RGBA32UI: return 16;
-    case ImageFormat::R16F: case ImageFormat::R16Unorm: return 2;
-    case ImageFormat::RG16F: case ImageFormat::RG16Unorm: return 4;
-    case ImageFormat::RGBA16F: case ImageFormat::RGBA16Unorm: return 8;
+    case ImageFormat::R32F:
+    case ImageFormat::R32UI:
+      return 4;
+    case ImageFormat::RG32F:
+    case ImageFormat::RG32UI:
+      return 8;
+    case ImageFormat::RGBA32F:
+    case ImageFormat::RGBA32UI:
+      return 16;
+    case ImageFormat::R16F:
+    case ImageFormat::R16Unorm:
+      return 2;
+    case ImageFormat::RG16F:
+    case ImageFormat::RG16Unorm:
+      return 4;
+    case ImageFormat::RGBA16F:
+    case ImageFormat::RGBA16Unorm:
+      return 8;
   }
   return 0;
 }
@@ -150,6 +237,7 @@ nlohmann::ordered_json toJson(const Manifest& m) {
     auto& pcs = e["push_constants"] = nlohmann::ordered_json::array();
     for (const auto& pc : p.pushConstants)
       pcs.push_back({{"name", pc.name}, {"offset", pc.offset}, {"type", toString(pc.type)}, {"value", pc.value}});
+    if (p.parameters) e["parameters"] = parametersJson(*p.parameters);
     passes.push_back(std::move(e));
   }
   nlohmann::ordered_json shade;
@@ -200,6 +288,7 @@ Manifest manifestFromJson(const nlohmann::json& j) {
     for (const auto& pc : field(e, "push_constants"))
       p.pushConstants.push_back({get<std::string>(pc, "name"), get<uint32_t>(pc, "offset"),
                                  parseEnum(pc, "type", kScalars), get<double>(pc, "value")});
+    if (e.contains("parameters")) p.parameters = parametersFromJson(e["parameters"], p.name);
     m.passes.push_back(std::move(p));
   }
   const auto& s = field(j, "shade");
@@ -212,8 +301,13 @@ Manifest manifestFromJson(const nlohmann::json& j) {
   // Cross-references: every binding names a declared image (or the frame buffer).
   for (const auto& p : m.passes)
     for (const auto& b : p.bindings) {
+      if (b.access == Access::Uniform && b.image == kParametersBinding &&
+          (!p.parameters || p.parameters->binding != b.binding))
+        throw ManifestError("manifest: pass '" + p.name + "' binds 'parameters' at " + std::to_string(b.binding) +
+                            " but has no parameter block there");
       if (b.access == Access::Uniform) continue;
-      const bool known = std::any_of(m.images.begin(), m.images.end(), [&](const ImageDesc& im) { return im.name == b.image; });
+      const bool known =
+          std::any_of(m.images.begin(), m.images.end(), [&](const ImageDesc& im) { return im.name == b.image; });
       if (!known) throw ManifestError("manifest: pass '" + p.name + "' binds unknown image '" + b.image + "'");
     }
   return m;

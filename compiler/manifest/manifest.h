@@ -5,27 +5,39 @@
 
 #include <array>
 #include <cstdint>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
-
-#include <nlohmann/json.hpp>
 
 namespace shadowc {
 
 inline constexpr int kManifestFormatVersion = 1;
 
-enum class ImageFormat { R32F, RG32F, RGBA32F, R16F, RG16F, RGBA16F, R16Unorm, RG16Unorm, RGBA16Unorm,
-                         R32UI, RG32UI, RGBA32UI };
+enum class ImageFormat {
+  R32F,
+  RG32F,
+  RGBA32F,
+  R16F,
+  RG16F,
+  RGBA16F,
+  R16Unorm,
+  RG16Unorm,
+  RGBA16Unorm,
+  R32UI,
+  RG32UI,
+  RGBA32UI
+};
 
 // What the runtime must put into (or take out of) an image. Internal images are the
 // filter's own business; the others are the fixed interface between harness and filter.
 enum class ImageRole {
   Internal,
-  InputDepth,      // light-space normalized linear depth, R32F, size "map" (see frame.glsl)
-  InputPosition,   // camera G-buffer world position, RGBA32F, w = 1 where geometry
-  InputNormal,     // camera G-buffer world normal, RGBA32F
-  OutputVisibility // R32F in [0,1], size "screen"
+  InputDepth,       // light-space normalized linear depth, R32F, size "map" (see frame.glsl)
+  InputPosition,    // camera G-buffer world position, RGBA32F, w = 1 where geometry
+  InputNormal,      // camera G-buffer world normal, RGBA32F
+  OutputVisibility  // R32F in [0,1], size "screen"
 };
 
 enum class SizeDomain { Map, Screen };
@@ -47,9 +59,10 @@ struct ImageDesc {
 enum class Access { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform };
 struct Binding {
   uint32_t binding = 0;
-  std::string image;  // image name, or "frame" for the ShadowcFrame uniform buffer
+  std::string
+      image;  // image name, "frame" for the ShadowcFrame uniform buffer, "parameters" for the pass's ParameterBlock
   Access access = Access::Sampled;
-  int level = -1;     // storage views: the mip level bound; -1 = level 0 / whole image
+  int level = -1;  // storage views: the mip level bound; -1 = level 0 / whole image
 };
 
 enum class DispatchMode {
@@ -70,15 +83,39 @@ struct PushConstant {
   double value = 0;  // the value the runtime pushes for this pass
 };
 
+// A uniform block whose bytes the runtime writes from the manifest: the options of a generic
+// shader (`shadowc compile --generic`, docs/cli.md). Each member sits at its std140 offset (the
+// shader declares the same offsets with layout(offset = ...)); an array's elements are `stride`
+// bytes apart and hold `components` consecutive scalars each.
+struct BlockMember {
+  std::string name;   // the GLSL member of shadowc_generic
+  std::string macro;  // the SHADOWC_* option or shadowc_* table of the template it replaces
+  ScalarType type = ScalarType::F32;
+  uint32_t offset = 0;
+  uint32_t stride = 0;      // bytes between array elements; 0 for a scalar
+  uint32_t count = 1;       // declared array length (1 for a scalar); values may fill fewer
+  uint32_t components = 1;  // scalars per element (2 for a vec2 array)
+  std::vector<double> values;
+  friend bool operator==(const BlockMember&, const BlockMember&) = default;
+};
+struct ParameterBlock {
+  uint32_t binding = 0;  // in the pass's set 0 (listed in `bindings` as image "parameters")
+  uint32_t size = 0;     // bytes
+  std::vector<BlockMember> members;
+  friend bool operator==(const ParameterBlock&, const ParameterBlock&) = default;
+};
+inline constexpr const char* kParametersBinding = "parameters";
+
 struct Pass {
-  std::string name;  // unique, e.g. "sat_rows", "minmax_level3", "shade"
-  std::string kind;  // what it does, for reports only: "moments", "blur", "sat", "minmax", "shade", ...
-  std::string spirv; // file name relative to the manifest
-  std::string glsl;  // file name relative to the manifest
+  std::string name;   // unique, e.g. "sat_rows", "minmax_level3", "shade"
+  std::string kind;   // what it does, for reports only: "moments", "blur", "sat", "minmax", "shade", ...
+  std::string spirv;  // file name relative to the manifest
+  std::string glsl;   // file name relative to the manifest
   std::array<uint32_t, 3> localSize{8, 8, 1};
   Dispatch dispatch;
   std::vector<Binding> bindings;
   std::vector<PushConstant> pushConstants;
+  std::optional<ParameterBlock> parameters;  // generic shaders only (JSON "parameters", absent otherwise)
 };
 
 // The includable lookup function for engines (DESIGN.md: "the shade function's interface").
@@ -93,12 +130,12 @@ struct ShadeInterface {
 struct Manifest {
   int formatVersion = kManifestFormatVersion;
   std::string compilerVersion;
-  std::string filter;             // filter name
-  nlohmann::json spec;            // the normalized FilterSpec (as --print-spec prints it)
+  std::string filter;   // filter name
+  nlohmann::json spec;  // the normalized FilterSpec (as --print-spec prints it)
   std::vector<ImageDesc> images;
-  std::vector<Pass> passes;       // in execution order
+  std::vector<Pass> passes;  // in execution order
   ShadeInterface shade;
-  std::string contentHash;        // hash of every emitted file but the manifest itself
+  std::string contentHash;  // hash of every emitted file but the manifest itself
 };
 
 // JSON form. toJson is deterministic (fixed key order). fromJson throws ManifestError with
@@ -111,6 +148,9 @@ struct ManifestError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The bytes of a parameter block as the runtime uploads them (zeros where no value is given).
+void writeParameterBytes(const ParameterBlock& block, std::vector<uint8_t>& bytes);
+
 const char* toString(ImageFormat f);
 const char* toString(ImageRole r);
 const char* toString(Access a);
@@ -119,7 +159,6 @@ const char* toString(ScalarType t);
 const char* toString(SizeDomain d);
 uint32_t bytesPerTexel(ImageFormat f);
 // Width and height of a size rule, given the shadow-map size (square) and the screen size.
-std::array<uint32_t, 2> extentOf(const SizeRule& rule, uint32_t mapSize, uint32_t screenWidth,
-                                 uint32_t screenHeight);
+std::array<uint32_t, 2> extentOf(const SizeRule& rule, uint32_t mapSize, uint32_t screenWidth, uint32_t screenHeight);
 
 }  // namespace shadowc

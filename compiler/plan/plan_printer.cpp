@@ -92,6 +92,16 @@ std::string printPassGraph(const PassGraph& graph) {
     for (const Constant& c : graph.sources[i].values.constants)
       out += fmt::format("  value {} {}\n", c.name, printValue(c.value));
     for (const Table& t : graph.sources[i].values.tables) out += "  " + printTable(t) + "\n";
+    if (const auto& block = graph.sources[i].values.parameters) {
+      out += fmt::format("  parameters binding {} size {}\n", block->binding, block->size);
+      for (const BlockMember& m : block->members) {
+        std::string vs;
+        for (size_t k = 0; k < m.values.size() && k < 8; ++k) vs += fmt::format("{}{:.9g}", k ? " " : "", m.values[k]);
+        out += fmt::format("  uniform {} {} {} offset {}{} = {}{}\n", m.macro, m.name, toString(m.type), m.offset,
+                           m.stride ? fmt::format(" [{}] stride {}", m.count, m.stride) : std::string(), vs,
+                           m.values.size() > 8 ? " ..." : "");
+      }
+    }
   }
   return out;
 }

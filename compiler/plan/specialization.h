@@ -5,6 +5,7 @@
 // (plan/plan_printer.h). Nothing here is GLSL text.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <utility>
 #include <variant>
@@ -70,6 +71,9 @@ using Table = std::variant<RealTable, PointTable, QuadtreeTableSet, UnrolledQuad
 struct Specialization {
   std::vector<Constant> constants;  // rendered `#define name value`, in this order
   std::vector<Table> tables;        // rendered after the constants, in this order
+  // Generic shaders only (plan/generic_block.h): the uniform block declared first, and a
+  // `#define <macro> shadowc_generic.<name>` per member in place of the constant or table.
+  std::optional<ParameterBlock> parameters;
   void add(std::string name, SpecValue value) { constants.push_back({std::move(name), std::move(value)}); }
 };
 

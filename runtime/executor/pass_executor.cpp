@@ -81,6 +81,7 @@ struct PassExecutor::Impl {
     UniquePipeline pipeline;
     VkDescriptorSet set = VK_NULL_HANDLE;
     std::vector<uint8_t> push;
+    Buffer parameters;  // the pass's ParameterBlock (generic shaders), written once from the manifest
     std::array<uint32_t, 3> groups{1, 1, 1};
   };
 
@@ -343,6 +344,18 @@ struct PassExecutor::Impl {
     std::vector<VkDescriptorImageInfo> imageInfos;
     imageInfos.reserve(pass.bindings.size());
     const VkDescriptorBufferInfo bufferInfo{frame.buffer, 0, sizeof(ShadowcFrame)};
+    VkDescriptorBufferInfo parameterInfo{VK_NULL_HANDLE, 0, 0};
+    if (pass.parameters) {
+      // The generic shader's options: the manifest's values, laid out as it says (std140).
+      if (pass.parameters->size > ctx.properties().limits.maxUniformBufferRange)
+        throw ExecutorError(fmt::format("pass '{}': the {}-byte parameter block exceeds the device limit {}", pass.name,
+                                        pass.parameters->size, ctx.properties().limits.maxUniformBufferRange));
+      std::vector<uint8_t> bytes;
+      writeParameterBytes(*pass.parameters, bytes);
+      r.parameters = createHostBuffer(ctx, bytes.size(), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
+      std::memcpy(r.parameters.mapped, bytes.data(), bytes.size());
+      parameterInfo = {r.parameters.buffer, 0, bytes.size()};
+    }
     std::vector<VkWriteDescriptorSet> writes;
     for (const auto& b : pass.bindings) {
       VkWriteDescriptorSet w{VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET};
@@ -351,7 +364,10 @@ struct PassExecutor::Impl {
       w.descriptorCount = 1;
       if (b.access == Access::Uniform) {
         w.descriptorType = VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
-        w.pBufferInfo = &bufferInfo;
+        if (b.image == kParametersBinding && !pass.parameters)
+          throw ExecutorError(fmt::format("pass '{}': binding {} is 'parameters' but the pass has no parameter block",
+                                          pass.name, b.binding));
+        w.pBufferInfo = b.image == kParametersBinding ? &parameterInfo : &bufferInfo;
         writes.push_back(w);
         continue;
       }

@@ -12,13 +12,14 @@
 namespace shadowc {
 namespace {
 
-void checkGoldens(const driver::Result& r) {
+void checkGoldens(const driver::Result& r, std::string dir = "") {
   ASSERT_TRUE(r.ok) << r.log;
   const FilterSpec& spec = r.artifact->spec;
+  if (dir.empty()) dir = spec.name;
   int compared = 0;
   for (const EmittedFile& f : r.artifact->files) {
     if (!f.name.ends_with(".glsl") || f.name == lookupFileName(spec.name)) continue;  // lookup == shade's code
-    const auto golden = test::sourceDir() / "tests" / "emit" / "golden" / spec.name / f.name;
+    const auto golden = test::sourceDir() / "tests" / "emit" / "golden" / dir / f.name;
     EXPECT_EQ(test::compareGolden(golden, f.bytes), "");
     ++compared;
   }
@@ -34,6 +35,12 @@ TEST(EmitGolden, VssmInt32WithMinMax) { checkGoldens(driver::compileSpec(test::v
 TEST(EmitGolden, LayeredEvsm4Fp16) { checkGoldens(driver::compileSpec(test::layeredEvsmSpec())); }
 TEST(EmitGolden, PowerCdfBlurMips) { checkGoldens(driver::compileSpec(test::blurMipSpec())); }
 TEST(EmitGolden, MsmUnorm16Sample) { checkGoldens(test::compileSample("msm_unorm16")); }
+// `compile --generic` (plan/generic_block.h): the same sample with its options in the uniform block.
+TEST(EmitGolden, PcfPoisson16Generic) {
+  driver::Options o;
+  o.generic = true;
+  checkGoldens(driver::compileFile(test::samplePath("pcf_poisson16").string(), o), "pcf_poisson16_generic");
+}
 
 // The sibling that proves the comparison can fail.
 TEST(EmitGolden, AChangedByteIsReported) {

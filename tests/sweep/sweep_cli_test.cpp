@@ -156,16 +156,48 @@ TEST(SweepCli, NoFrontierRowIsDominatedAndInvalidOnesAreCounted) {
   EXPECT_NE(r.err.find("skipped 1 variant(s): 1 x E0416"), std::string::npos) << r.err;
 }
 
-TEST(SweepCli, GenericShadersAreSkippedWithTheirOwnCode) {
+// `shaders: ["specialized", "generic"]`: every valid variant runs both ways; each pair's
+// specialized / generic ratio is the quotient of its two rows' times, in the CSV, the JSON and
+// on the terminal; the generic twin computes the same visibility (same RMSE within 1e-3).
+TEST(SweepCli, GenericShadersRunBesideSpecializedWithTheirRatio) {
   const auto dir = writeSweep("sweep-generic", tinySweep(R"(["specialized", "generic"])"));
   const test::CliResult r = runSweep(dir, "out");
   ASSERT_EQ(r.code, 0) << r.err;
   const json j = results(dir / "out");
   std::map<std::string, int> codes;
   for (const auto& s : j["skipped"]) ++codes[s["code"].get<std::string>()];
-  EXPECT_EQ(codes["SW001"], 4);  // every valid variant's generic twin, until `compile --generic` exists
   EXPECT_EQ(codes["E0416"], 2);  // the invalid variant, in both kinds: the checker speaks first
-  EXPECT_EQ(j["rows"].size(), 4u);
+  EXPECT_EQ(codes.size(), 1u);
+  ASSERT_EQ(j["rows"].size(), 8u);
+  std::map<std::string, const json*> specialized;
+  for (const auto& row : j["rows"])
+    if (row["shader"] == "specialized") specialized[row["variant"].get<std::string>()] = &row;
+  int pairs = 0;
+  for (const auto& row : j["rows"]) {
+    ASSERT_TRUE(row.contains("specialized_over_generic")) << row["variant"];
+    if (row["shader"] != "generic") continue;
+    std::string label = row["variant"].get<std::string>();
+    label = label.substr(0, label.rfind(" (generic)"));
+    ASSERT_TRUE(specialized.count(label)) << label;
+    const json& s = *specialized[label];
+    EXPECT_NEAR(row["specialized_over_generic"].get<double>(),
+                s["total_ms"].get<double>() / row["total_ms"].get<double>(), 1e-9);
+    EXPECT_EQ(s["specialized_over_generic"], row["specialized_over_generic"]);
+    EXPECT_NEAR(row["metrics"]["rmse"].get<double>(), s["metrics"]["rmse"].get<double>(), 1e-3) << label;
+    EXPECT_NE(row["content_hash"], s["content_hash"]);  // a different shader
+    EXPECT_NE(r.out.find("  " + label + " "), std::string::npos) << r.out;
+    ++pairs;
+  }
+  EXPECT_EQ(pairs, 4);
+  EXPECT_NE(r.out.find("specialized vs generic two_planes"), std::string::npos) << r.out;
+  // The CSV's last column is the same ratio, on both rows of a pair.
+  std::istringstream csv(test::readFile(dir / "out/results.csv"));
+  std::string line;
+  std::getline(csv, line);
+  EXPECT_TRUE(line.ends_with(",specialized_over_generic")) << line;
+  int filled = 0;
+  while (std::getline(csv, line)) filled += line.back() != ',';
+  EXPECT_EQ(filled, 8);
 }
 
 TEST(SweepCli, InterruptedSweepRerunsNothingFinished) {
