@@ -47,7 +47,7 @@ TEST(SunLight, JsonFormLoadsAndIsChecked) {
   EXPECT_NE(errorOf(R"({"type": "sun", "direction": [0, -1, 0], "angle": 50})")
                 .find("light.angle: expected an angular diameter"),
             std::string::npos);
-  EXPECT_NE(errorOf(R"({"type": "sun", "direction": [0, -1, 0]})").find("light: missing required field 'angle'"),
+  EXPECT_NE(errorOf(R"({"type": "sun", "direction": [0, -1, 0]})").find("light.angle: missing required field"),
             std::string::npos)
       << errorOf(R"({"type": "sun", "direction": [0, -1, 0]})");
   EXPECT_NE(errorOf(R"({"type": "sun", "direction": [0, -1, 0], "angle": 1, "size": 1})").find("size"),
