@@ -158,7 +158,7 @@ const Rule kRules[] = {
     {DiagId::expWarpFp32Sat, Caret::Storage, [](const Facts& f) { return f.expFp32Sat(); },
      [](const Facts& f, Args& a) {
        const double w = static_cast<double>(f.s.mapSize);
-       push(a, warpName(f.s.moments.warp), f.s.mapSize, w * w, std::exp(f.largestExponent()));
+       push(a, shadowc::name(f.s.moments.warp), f.s.mapSize, w * w, std::exp(f.largestExponent()));
      }},
     {DiagId::naiveFp32Sat, Caret::Storage,
      [](const Facts& f) { return f.moments && f.s.storage.sat == SatKind::Fp32Naive; }},
