@@ -12,15 +12,6 @@
 namespace shadowc::planning {
 namespace {
 
-// The catalog's candidates are spot-light filters (a filter reads its map through its light's
-// projection, runOnScene refuses a mismatch): the default calibration set is the spot scenes.
-std::vector<std::string> spotBuiltinScenes() {
-  std::vector<std::string> names;
-  for (const std::string& n : rt::builtinSceneNames())
-    if (rt::loadScene(n).light.type != rt::LightType::Sun) names.push_back(n);
-  return names;
-}
-
 bool isDepthFamily(const Candidate& c) { return c.has(Feature::SlopeBias); }
 
 DescribeOptions sweepDescribeOptions(const Candidate& c, bool slopeBias) {
@@ -63,6 +54,15 @@ std::string sweepVariantName(const Candidate& c, bool slopeBias) {
   return isDepthFamily(c) && !slopeBias ? c.name + "_constant_bias" : c.name;
 }
 
+// The catalog's candidates are spot-light filters (a filter reads its map through its light's
+// projection, runOnScene refuses a mismatch): the default calibration set is the spot scenes.
+std::vector<std::string> defaultCalibrationScenes() {
+  std::vector<std::string> names;
+  for (const std::string& n : rt::builtinSceneNames())
+    if (rt::loadScene(n).light.type != rt::LightType::Sun) names.push_back(n);
+  return names;
+}
+
 std::string calibrationSweepJson(const CalibrationRequest& r) {
   nlohmann::ordered_json j;
   j["name"] = "plan_calibration";
@@ -73,7 +73,7 @@ std::string calibrationSweepJson(const CalibrationRequest& r) {
       filters.push_back(
           {{"name", sweepVariantName(c, slope)}, {"text", describeCandidate(c, sweepDescribeOptions(c, slope))}});
     }
-  j["scenes"] = r.scenes.empty() ? spotBuiltinScenes() : r.scenes;
+  j["scenes"] = r.scenes.empty() ? defaultCalibrationScenes() : r.scenes;
   j["screen"] = r.screen;
   j["map"] = r.map;
   j["reference_samples"] = r.samples;

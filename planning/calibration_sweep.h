@@ -24,6 +24,9 @@ std::string sweepVariantName(const Candidate& c, bool slopeBias);
 
 // The description: every candidate x every scene of the request at its screen, map, samples,
 // runs and warm-up. Deterministic: the same request gives the same bytes.
+// The built-in scenes a calibration covers by default: the spot-light ones (the candidates are spot
+// filters; runOnScene refuses a filter whose light differs from the scene's).
+std::vector<std::string> defaultCalibrationScenes();
 std::string calibrationSweepJson(const CalibrationRequest& request);
 sweep::SweepSpec calibrationSweep(const CalibrationRequest& request);
 

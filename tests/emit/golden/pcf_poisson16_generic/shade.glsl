@@ -104,16 +104,23 @@ ivec4 shadowc_kernelRect(vec2 c, float w){
   ivec2 last = shadowc_mapSize()- 1;
   return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
 }
-#line 46
+#line 48
+vec4 shadowc_kernelBox(vec2 c, float w){
+#line 56
+  ivec4 r = shadowc_kernelRect(c, w);
+  return vec4(r . xy, r . zw + 1);
+
+}
+#line 62
 float shadowc_searchTexels(shadowc_Receiver r){
   return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
 }
-#line 52
+#line 68
 float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 58
+#line 74
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
