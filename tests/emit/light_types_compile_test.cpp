@@ -6,7 +6,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <regex>
 
 #include "backend/spirv_backend.h"
 #include "emit/emit_support.h"
@@ -15,15 +14,6 @@
 namespace shadowc {
 namespace {
 
-// The sample's text with its light replaced by `light` (or added after the `filter` line).
-std::string withLight(const std::string& text, const std::string& light) {
-  const std::regex lightLine(R"(\n[ \t]*light[ \t][^\n#]*)");
-  if (std::regex_search(text, lightLine))
-    return std::regex_replace(text, lightLine, "\n    " + light, std::regex_constants::format_first_only);
-  const size_t open = text.find('{');
-  return text.substr(0, open + 1) + "\n    " + light + text.substr(open + 1);
-}
-
 // What only frame_ortho.glsl defines (the perspective light space has no such function).
 constexpr const char* kOrthoMarker = "shadowc_worldToUV";
 
@@ -31,7 +21,8 @@ class SunSample : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(SunSample, CompilesWithOrthographicLightSpaceAndEverySpvValidates) {
   const std::string text = test::readFile(test::samplePath(GetParam()));
-  const driver::Result r = driver::compileSource(withLight(text, "light sun(angle: 0.53)"), GetParam() + "_sun.shadow");
+  const driver::Result r =
+      driver::compileSource(test::withLight(text, "light sun(angle: 0.53)"), GetParam() + "_sun.shadow");
   ASSERT_TRUE(r.ok) << GetParam() << ":\n" << r.log;
   EXPECT_EQ(r.artifact->spec.light.type, LightType::Sun);
   int spv = 0;

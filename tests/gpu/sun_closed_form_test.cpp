@@ -35,14 +35,6 @@ double exactSunVisibility(double x) {
   return sum * (s / kSteps) / (M_PI * s * s);
 }
 
-std::string withLight(const std::string& text, const std::string& light) {
-  const std::regex lightLine(R"(\n[ \t]*light[ \t][^\n#]*)");
-  if (std::regex_search(text, lightLine))
-    return std::regex_replace(text, lightLine, "\n    " + light, std::regex_constants::format_first_only);
-  const size_t open = text.find('{');  // a sample without a light line: insert one
-  return text.substr(0, open + 1) + "\n    " + light + text.substr(open + 1);
-}
-
 struct Band {
   std::vector<float> gpu, exact, reference;
 };

@@ -1,14 +1,14 @@
 #include "support/test_support.h"
 
-#include <atomic>
-#include <cstdlib>
-#include <fstream>
-#include <sstream>
-
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <atomic>
 #include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <regex>
+#include <sstream>
 
 namespace shadowc::test {
 
@@ -67,6 +67,14 @@ CliResult runShadowc(const std::string& args, const std::string& env) {
   r.err = readFile(errFile);
   std::filesystem::remove_all(errFile.parent_path());
   return r;
+}
+
+std::string withLight(const std::string& text, const std::string& light) {
+  const std::regex lightLine(R"(\n[ \t]*light[ \t][^\n#]*)");
+  if (std::regex_search(text, lightLine))
+    return std::regex_replace(text, lightLine, "\n    " + light, std::regex_constants::format_first_only);
+  const size_t open = text.find('{');
+  return text.substr(0, open + 1) + "\n    " + light + text.substr(open + 1);
 }
 
 }  // namespace shadowc::test

@@ -6,9 +6,12 @@
 
 namespace shadowc::test {
 
-std::filesystem::path sourceDir();                      // the repository root
+std::filesystem::path sourceDir();                           // the repository root
 std::filesystem::path freshTempDir(const std::string& tag);  // empty, unique per test
 std::string readFile(const std::filesystem::path& p);
+
+// A filter text with its `light` line replaced by `light` (inserted after `{` when it has none).
+std::string withLight(const std::string& text, const std::string& light);
 
 // Golden files (glslang's Test/baseResults habit): compares `actual` with the file; when the
 // environment has SHADOWC_UPDATE_GOLDEN=1 the file is rewritten instead and the check passes.
