@@ -19,6 +19,7 @@
 #include "compiler/driver/driver.h"
 #include "compiler/emit/shader_emitter.h"
 #include "compiler/plan/planner.h"
+#include "shadowc_source_dir.h"
 
 namespace fs = std::filesystem;
 using Clock = std::chrono::steady_clock;

@@ -27,6 +27,7 @@
 #include "compiler/driver/driver.h"
 #include "runtime/harness/scene_run.h"
 #include "runtime/vulkan/vulkan_context.h"
+#include "shadowc_source_dir.h"
 
 namespace fs = std::filesystem;
 using namespace shadowc;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "runtime/images/atomic_file.h"
+#include "shadowc_source_dir.h"
 
 namespace shadowc::sweep {
 namespace {

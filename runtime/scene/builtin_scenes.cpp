@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "runtime/scene/scene.h"
+#include "shadowc_source_dir.h"
 #include "support/suggest.h"
 
 namespace shadowc::rt {

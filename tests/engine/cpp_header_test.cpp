@@ -13,6 +13,7 @@
 
 #include "emit/emit_support.h"
 #include "emit/filter_emitter.h"
+#include "shadowc_test_paths.h"
 
 namespace shadowc {
 namespace {

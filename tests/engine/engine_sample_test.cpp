@@ -19,6 +19,7 @@
 #include "runtime/scene/frame_setup.h"
 #include "runtime/scene/scene.h"
 #include "runtime/vulkan/vulkan_context.h"
+#include "shadowc_test_paths.h"
 
 namespace shadowc {
 namespace {

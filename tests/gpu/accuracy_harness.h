@@ -21,6 +21,7 @@
 #include "runtime/harness/run_harness.h"
 #include "runtime/harness/scene_run.h"
 #include "runtime/metrics/metrics.h"
+#include "shadowc_test_paths.h"
 #include "support/test_support.h"
 #include "validation/stability/crafted_run.h"
 

@@ -13,6 +13,7 @@
 
 #include "backend/spirv_backend.h"
 #include "runtime/executor/host_image.h"
+#include "shadowc_source_dir.h"
 
 namespace shadowc::test {
 

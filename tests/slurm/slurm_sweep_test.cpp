@@ -7,6 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "shadowc_test_paths.h"
 #include "support/test_support.h"
 #include "sweep/pareto.h"
 #include "sweep/results_io.h"

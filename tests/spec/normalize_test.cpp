@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "shadowc_source_dir.h"
 #include "spec/load_filter.h"
 #include "spec/precision.h"
 #include "spec/print_filter.h"

@@ -10,6 +10,9 @@
 #include <regex>
 #include <sstream>
 
+#include "shadowc_source_dir.h"
+#include "shadowc_test_paths.h"
+
 namespace shadowc::test {
 
 std::filesystem::path sourceDir() { return SHADOWC_SOURCE_DIR; }
