@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "planning/scene_analysis.h"
@@ -78,8 +79,13 @@ nlohmann::ordered_json toJson(const SceneStats& s) {
 std::string formatSummary(const SceneStats& s) {
   std::string out;
   out += fmt::format("scene    {}  map {}^2  screen {}^2\n", s.scene, s.mapSize, s.screen);
-  out +=
-      fmt::format("light    {} width {:g}  near {:g}  far {:g}\n", s.lightShape, s.lightWidth, s.nearPlane, s.farPlane);
+  if (s.lightShape == "sun")  // lightWidth is the penumbra slope 2 tan(angle / 2) (frame_ortho.glsl)
+    out +=
+        fmt::format("light    sun angle {:.3g} deg (penumbra slope {:g})  near {:g}  far {:g}\n",
+                    2 * std::atan(0.5 * s.lightWidth) * 180 / 3.14159265358979, s.lightWidth, s.nearPlane, s.farPlane);
+  else
+    out += fmt::format("light    {} width {:g}  near {:g}  far {:g}\n", s.lightShape, s.lightWidth, s.nearPlane,
+                       s.farPlane);
   out += fmt::format("receivers {} front-facing ({} back-facing): lit {:.1f} %, umbra {:.1f} %, penumbra {:.1f} %\n",
                      s.receivers, s.backFacing, pct(s.lit, s.receivers), pct(s.umbra, s.receivers),
                      pct(s.penumbra, s.receivers));

@@ -31,29 +31,52 @@ Distribution makeDistribution(std::vector<double> values, std::vector<double> ed
   return d;
 }
 
-// Light-view geometry of frame.glsl: uv = 0.5 + 0.5 xy / (z tanHalfFov), d = (z - n) / (f - n).
+// Light-view geometry of frame.glsl (a spot): uv = 0.5 + 0.5 xy / (z tanHalfFov), and of
+// frame_ortho.glsl (a sun): uv = 0.5 + 0.5 xy / halfExtent; both d = (z - n) / (f - n).
+// `width` is the light's width in world units for a spot, the penumbra slope 2 tan(angle / 2)
+// for a sun (lightParams.w in both).
 struct LightFrame {
   glm::mat4 view;
-  double tanHalf, n, f, width;
+  double scale, n, f, width;  // scale: tanHalfFov (spot) or halfExtent (sun)
   uint32_t map;
-  glm::dvec3 rayThroughTexel(double tx, double ty) const {  // view-space direction with z = 1
-    const double u = (tx + 0.5) / map, v = (ty + 0.5) / map;
-    return {(2 * u - 1) * tanHalf, (2 * v - 1) * tanHalf, 1.0};
+  bool ortho = false;
+  glm::dvec2 uv(const glm::dvec3& p) const {
+    const double s = ortho ? scale : p.z * scale;
+    return {0.5 + 0.5 * p.x / s, 0.5 + 0.5 * p.y / s};
+  }
+  // The ray through texel (tx, ty): origin and direction, direction.z = 1.
+  std::pair<glm::dvec3, glm::dvec3> rayThroughTexel(double tx, double ty) const {
+    const double x = 2 * (tx + 0.5) / map - 1, y = 2 * (ty + 0.5) / map - 1;
+    if (ortho) return {glm::dvec3(x * scale, y * scale, 0.0), glm::dvec3(0, 0, 1)};
+    return {glm::dvec3(0.0), glm::dvec3(x * scale, y * scale, 1.0)};
   }
   double normalized(double z) const { return (z - n) / (f - n); }
-  double lightSizeUV() const { return width / (2 * n * tanHalf); }
+  // Unit vector from the receiver at p towards the light.
+  glm::dvec3 toLight(const glm::dvec3& p) const { return ortho ? glm::dvec3(0, 0, -1) : -glm::normalize(p); }
+  // Blocker-search width in texels (shadowc_searchWidthUV): the light seen from the receiver,
+  // cut at the near plane.
+  double searchTexels(double zr) const {
+    if (ortho) return width * std::max(zr - n, 0.0) / (2 * scale) * map;
+    return width / (2 * n * scale) * (zr - n) / zr * map;
+  }
+  // PCSS penumbra width in texels (shadowc_penumbraWidthUV) behind a blocker at view depth zb:
+  // perspective (zr - zb) / zb * width, orthographic (zr - zb) * 2 tan(angle / 2).
+  double penumbraTexels(double zr, double zb) const {
+    if (ortho) return width * std::max(zr - zb, 0.0) / (2 * scale) * map;
+    return width / (2 * n * scale) * n * (zr - zb) / (zb * zr) * map;
+  }
 };
 
 // Normalized depth of the receiver's tangent plane seen through texel (tx, ty); `fallback`
 // where the ray misses the plane (grazing or behind the light).
 double planeDepth(const LightFrame& lf, const glm::dvec3& p, const glm::dvec3& nrm, double tx, double ty,
                   double fallback) {
-  const glm::dvec3 dir = lf.rayThroughTexel(tx, ty);
+  const auto [origin, dir] = lf.rayThroughTexel(tx, ty);
   const double denom = glm::dot(nrm, dir);
   if (std::abs(denom) < 1e-9) return fallback;
-  const double t = glm::dot(nrm, p) / denom;  // z of the hit, since dir.z = 1
+  const double t = glm::dot(nrm, p - origin) / denom;  // z of the hit minus the origin's, since dir.z = 1
   if (!(t > 0) || !std::isfinite(t)) return fallback;
-  return lf.normalized(t);
+  return lf.normalized(origin.z + t);
 }
 
 // Distinct depth clusters among sorted blocker depths: a new cluster where the gap exceeds
@@ -88,8 +111,8 @@ double SceneStats::uniformFraction() const { return receivers ? double(lit + umb
 
 SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& options) {
   const ShadowcFrame& fr = scene.setup.frame;
-  LightFrame lf{scene.setup.lightView, fr.lightParams[0], fr.lightParams[1],
-                fr.lightParams[2],     fr.lightParams[3], scene.setup.mapSize};
+  LightFrame lf{scene.setup.lightView, fr.lightParams[0],   fr.lightParams[1],       fr.lightParams[2],
+                fr.lightParams[3],     scene.setup.mapSize, scene.setup.orthographic};
   const uint32_t map = lf.map;
   const std::vector<float> depth = scene.raster.lightDepth.channel(0);
   const std::vector<float> pos = scene.raster.gbufferPosition.floats();
@@ -105,7 +128,7 @@ SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& o
   s.mapSize = map;
   s.screen = scene.setup.width;
   s.lightWidth = lf.width;
-  s.lightShape = fr.lightShape[0] == 0 ? "rect" : fr.lightShape[0] == 1 ? "disk" : "point";
+  s.lightShape = lf.ortho ? "sun" : fr.lightShape[0] == 0 ? "rect" : fr.lightShape[0] == 1 ? "disk" : "point";
   s.nearPlane = lf.n;
   s.farPlane = lf.f;
   s.contactEpsilon = options.contactEpsilon;
@@ -130,10 +153,11 @@ SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& o
     const glm::dvec3 world(pos[4 * i], pos[4 * i + 1], pos[4 * i + 2]);
     const glm::dvec3 p = glm::dvec3(glm::dmat4(lf.view) * glm::dvec4(world, 1.0));
     if (!(p.z > 0)) continue;
-    const double u = 0.5 + 0.5 * p.x / (p.z * lf.tanHalf), v = 0.5 + 0.5 * p.y / (p.z * lf.tanHalf);
+    const glm::dvec2 uv = lf.uv(p);
+    const double u = uv.x, v = uv.y;
     if (u < 0 || u >= 1 || v < 0 || v >= 1) continue;
     const glm::dvec3 nrm = glm::normalize(rot * glm::dvec3(nor[4 * i], nor[4 * i + 1], nor[4 * i + 2]));
-    const double cosL = glm::dot(nrm, -glm::normalize(p));
+    const double cosL = glm::dot(nrm, lf.toLight(p));
     if (cosL <= 0) {
       ++s.backFacing;
       continue;
@@ -147,7 +171,7 @@ SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& o
 
     // Blocker search over the cone to the light cut at the near plane (shadowc_searchWidthUV),
     // at least the 3x3 neighbourhood so a point light still sees touching occluders.
-    const double searchTexels = lf.lightSizeUV() * (p.z - lf.n) / p.z * map;
+    const double searchTexels = lf.searchTexels(p.z);
     search.push_back(searchTexels);
     const double half = std::clamp(searchTexels * 0.5, 1.0, double(map));
     const int taps = std::min(options.maxTapsPerAxis, 2 * int(std::ceil(half)) + 1);
@@ -186,7 +210,7 @@ SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& o
     ++s.penumbra;
     // PCSS penumbra estimate at the receiver (shadowc_penumbraWidthUV) from the average blocker.
     const double zb = lf.n + (sum / double(blockers.size())) * (lf.f - lf.n);
-    const double w = lf.lightSizeUV() * lf.n * (p.z - zb) / (zb * p.z) * map;
+    const double w = lf.penumbraTexels(p.z, zb);
     widths.push_back(std::max(0.0, w));
     // Depth complexity inside the kernel region (the penumbra width around the receiver).
     const double kr = std::max(0.5 * w, stride);

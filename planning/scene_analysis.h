@@ -39,7 +39,7 @@ struct AnalysisOptions {
 struct SceneStats {
   std::string scene;
   uint32_t mapSize = 0, screen = 0;
-  double lightWidth = 0;  // world units (0 = point light)
+  double lightWidth = 0;  // world units (0 = point light); a sun's penumbra slope 2 tan(angle / 2)
   std::string lightShape;
   double nearPlane = 0, farPlane = 0;
 

@@ -3,7 +3,9 @@
 // to the manifest, GLSL and SPIR-V, the comments, and the three error cases.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <glm/glm.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -101,6 +103,39 @@ TEST(Analysis, TwoPlanesPenumbraMatchesTheClosedForm) {
   }());
   EXPECT_NEAR(planning::analyzeScene(*big).penumbraTexels.p50, 2 * expected, 0.02 * expected);
   EXPECT_GT(std::abs(planning::analyzeScene(*big).penumbraTexels.p50 - expected), 0.5 * expected);
+}
+
+// sun_two_planes: a 4-degree sun straight down over an edge 1 above the floor. The orthographic
+// form (frame_ortho.glsl): penumbra = (z_r - z_b) 2 tan(angle / 2) world units = 1 * 2 tan(2 deg),
+// over a texel of 2 halfExtent / map. The perspective formula read this scene's halfExtent as a
+// tan(fov / 2) and gave widths off by orders of magnitude.
+TEST(Analysis, SunPenumbraTakesTheOrthographicForm) {
+  rt::SceneSettings s;
+  s.scene = "sun_two_planes";
+  s.screen = kScreen;
+  s.map = kMap;
+  s.traceReference = false;
+  const auto prepared = rt::prepareScene(context(), s);
+  ASSERT_TRUE(prepared->setup.orthographic);
+  const planning::SceneStats st = planning::analyzeScene(*prepared);
+  const double halfExtent = prepared->setup.halfExtent;
+  const double expected = 1.0 * 2 * std::tan(glm::radians(2.0)) / (2 * halfExtent) * kMap;
+  ASSERT_GT(st.penumbra, 0u);
+  EXPECT_EQ(st.lightShape, "sun");
+  EXPECT_NEAR(st.penumbraTexels.p50, expected, 0.05 * expected);
+  EXPECT_EQ(st.contact, 0u);  // the edge is 1 above the floor
+  EXPECT_NE(planning::formatSummary(st).find("sun angle 4 deg"), std::string::npos) << planning::formatSummary(st);
+  // Sibling: an 8-degree sun, twice the slope (tan 4 / tan 2 = 2.003), twice the penumbra.
+  nlohmann::json j = nlohmann::json::parse(rt::builtinSceneJson("sun_two_planes"));
+  j["light"]["angle"] = 8.0;
+  j["name"] = "sun_two_planes_8deg";
+  const auto path = test::freshTempDir("planning_sun8") / "scene.json";
+  rt::writeFileAtomically(path, j.dump(2));
+  rt::SceneSettings wide = s;
+  wide.scene = path.string();
+  const double p50 = planning::analyzeScene(*rt::prepareScene(context(), wide)).penumbraTexels.p50;
+  EXPECT_NEAR(p50, 2.003 * expected, 0.1 * expected);
+  EXPECT_GT(std::abs(p50 - expected), 0.5 * expected);
 }
 
 TEST(Analysis, ContactSceneHasContactAndSeveralDepths) {
