@@ -10,6 +10,7 @@ std::string cacheKey(const KeyInputs& in) {
   j["results_version"] = kResultsVersion;  // a new row format invalidates old entries
   j["spec"] = in.spec;
   j["shader"] = in.shader;
+  j["emitted"] = in.emitted;
   j["scene_hash"] = in.sceneHash;
   j["screen"] = in.screen;
   j["map"] = in.map;

@@ -1,6 +1,8 @@
 // The cache key of one row: a content hash of everything that decides its numbers — the
 // variant's normalized spec (what the checker made of its text, so reformatting the text or
-// reordering settings keeps the key), the shader kind, the scene's content hash (geometry,
+// reordering settings keeps the key), the shader kind, the content hash of the code shadowc
+// emitted for it (manifest.contentHash: a new template or folding rule makes a new key), the
+// scene's content hash (geometry,
 // camera and light), screen, map, reference samples, runs, warm-up and the device asked for.
 // The same key means the row need not run again (docs/sweep.md "Resume and caching").
 #pragma once
@@ -14,6 +16,7 @@ namespace shadowc::sweep {
 struct KeyInputs {
   nlohmann::ordered_json spec;
   std::string shader;
+  std::string emitted;  // the compiled variant's manifest content hash
   std::string sceneHash;
   uint32_t screen = 0, map = 0;
   int referenceSamples = 0, runs = 0, warmup = 0;

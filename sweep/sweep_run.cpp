@@ -96,52 +96,12 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
     if (ch.skipped) res.skipped.push_back(*ch.skipped);
   }
 
-  // 3. Scenes (derived ones written to DIR/scenes/), keys, cache look-ups.
-  std::vector<ResolvedScene> scenes(e.cases.size());
-  std::map<std::string, ResolvedScene> byLabel;  // one scene serves every screen x map case
-  for (const Case& c : e.cases) {
-    if (!caseNeeded[c.index]) continue;
-    auto it = byLabel.find(c.scene.label);
-    if (it == byLabel.end()) it = byLabel.emplace(c.scene.label, resolveScene(c.scene, o.outDir)).first;
-    scenes[c.index] = it->second;
-  }
-  std::vector<Job> pending;
-  std::vector<Row> rows;
-  for (const Case& c : e.cases)
-    for (const Variant& v : e.variants) {
-      if (!o.shard.contains(c.index * e.variants.size() + v.index) || !checked[v.index].spec) continue;
-      if (int(c.map) > checked[v.index].spec->mapSize) {  // as validate: its precision checks assume at most that
-        res.skipped.push_back({v.index, v.label, "SW004",
-                               fmt::format("{}: map {} exceeds the filter's map_size {}", c.label, c.map,
-                                           checked[v.index].spec->mapSize)});
-        continue;
-      }
-      const std::string key = cacheKey({checked[v.index].specJson, shaderKindName(v.shader), scenes[c.index].hash,
-                                        c.screen, c.map, spec.referenceSamples, spec.runs, spec.warmup, o.device});
-      if (std::optional<Row> cached = readCachedRow(o.outDir, key)) {
-        cached->variantIndex = v.index;  // the same measurement may sit at another place in a new sweep
-        cached->caseIndex = c.index;
-        cached->variant = v.label;
-        cached->base = v.base;
-        cached->params = v.params;
-        cached->filterText = v.text;
-        cached->normalizedText = printFilter(*checked[v.index].spec);
-        cached->caseLabel = c.label;
-        cached->scene = c.scene.label;
-        rows.push_back(std::move(*cached));
-        ++res.stats.cached;
-      } else {
-        pending.push_back({v.index, c.index, key});
-      }
-    }
-  fmt::print(log, "sweep: {}: {} variants x {} cases{}; {} invalid, {} rows cached, {} to run\n", spec.name,
-             e.variants.size(), e.cases.size(), o.shard.count > 1 ? " (shard " + o.shard.text() + ")" : "",
-             res.skipped.size(), rows.size(), pending.size());
-
-  // 4. Compile what has to run, in parallel (the driver keeps no shared mutable state).
+  // 3. Compile every valid variant, in parallel (the driver keeps no shared mutable state): the
+  //    emitted code's content hash is part of the cache key, so a row measured with another
+  //    shadowc's shaders (a changed template, folding or recipe) is never reused.
   std::vector<size_t> toCompile;
-  for (const Job& j : pending)
-    if (std::find(toCompile.begin(), toCompile.end(), j.variant) == toCompile.end()) toCompile.push_back(j.variant);
+  for (const Variant& v : e.variants)
+    if (variantNeeded[v.index] && checked[v.index].spec) toCompile.push_back(v.index);
   std::map<size_t, Compiled> compiled;
   for (size_t v : toCompile) compiled[v];
   {
@@ -174,7 +134,50 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
   }
   for (const auto& [v, c] : compiled)
     if (c.skipped) res.skipped.push_back(*c.skipped);
-  std::erase_if(pending, [&](const Job& j) { return !compiled.at(j.variant).passes; });
+  // 4. Scenes (derived ones written to DIR/scenes/), keys, cache look-ups.
+  std::vector<ResolvedScene> scenes(e.cases.size());
+  std::map<std::string, ResolvedScene> byLabel;  // one scene serves every screen x map case
+  for (const Case& c : e.cases) {
+    if (!caseNeeded[c.index]) continue;
+    auto it = byLabel.find(c.scene.label);
+    if (it == byLabel.end()) it = byLabel.emplace(c.scene.label, resolveScene(c.scene, o.outDir)).first;
+    scenes[c.index] = it->second;
+  }
+  std::vector<Job> pending;
+  std::vector<Row> rows;
+  for (const Case& c : e.cases)
+    for (const Variant& v : e.variants) {
+      if (!o.shard.contains(c.index * e.variants.size() + v.index) || !checked[v.index].spec ||
+          !compiled.at(v.index).passes)
+        continue;
+      if (int(c.map) > checked[v.index].spec->mapSize) {  // as validate: its precision checks assume at most that
+        res.skipped.push_back({v.index, v.label, "SW004",
+                               fmt::format("{}: map {} exceeds the filter's map_size {}", c.label, c.map,
+                                           checked[v.index].spec->mapSize)});
+        continue;
+      }
+      const std::string key =
+          cacheKey({checked[v.index].specJson, shaderKindName(v.shader), compiled.at(v.index).contentHash,
+                    scenes[c.index].hash, c.screen, c.map, spec.referenceSamples, spec.runs, spec.warmup, o.device});
+      if (std::optional<Row> cached = readCachedRow(o.outDir, key)) {
+        cached->variantIndex = v.index;  // the same measurement may sit at another place in a new sweep
+        cached->caseIndex = c.index;
+        cached->variant = v.label;
+        cached->base = v.base;
+        cached->params = v.params;
+        cached->filterText = v.text;
+        cached->normalizedText = printFilter(*checked[v.index].spec);
+        cached->caseLabel = c.label;
+        cached->scene = c.scene.label;
+        rows.push_back(std::move(*cached));
+        ++res.stats.cached;
+      } else {
+        pending.push_back({v.index, c.index, key});
+      }
+    }
+  fmt::print(log, "sweep: {}: {} variants x {} cases{}; {} invalid, {} rows cached, {} to run\n", spec.name,
+             e.variants.size(), e.cases.size(), o.shard.count > 1 ? " (shard " + o.shard.text() + ")" : "",
+             res.skipped.size(), rows.size(), pending.size());
 
   // 5. Run, one case at a time: the scene (raster + reference) is prepared once per case.
   if (!pending.empty()) {
