@@ -59,7 +59,7 @@ std::string sweepVariantName(const Candidate& c, bool slopeBias) {
 std::vector<std::string> defaultCalibrationScenes() {
   std::vector<std::string> names;
   for (const std::string& n : rt::builtinSceneNames())
-    if (rt::loadScene(n).light.type != rt::LightType::Sun) names.push_back(n);
+    if (rt::loadScene(n).light.type == rt::LightType::Spot) names.push_back(n);
   return names;
 }
 

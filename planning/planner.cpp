@@ -67,7 +67,13 @@ bool useSlopeBias(const std::vector<SceneStats>& stats, const PlanRules& rules) 
 // projection); scenes of both kinds cannot share one filter.
 bool sunScenes(const PlanScenes& scenes) {
   size_t suns = 0;
-  for (const auto& p : scenes.prepared) suns += p->scene.light.type == rt::LightType::Sun;
+  for (const auto& p : scenes.prepared) {
+    suns += p->scene.light.type == rt::LightType::Sun;
+    // Candidates are spot or sun filters; scene_analysis measures no cube faces (issue 14 item 4).
+    if (p->scene.light.type == rt::LightType::Point)
+      throw PlanError("plan does not analyze point-light scenes yet ('" + p->scene.name +
+                      "'): compile a 'light point(radius: scene)' filter and check it with 'shadowc validate'");
+  }
   if (suns != 0 && suns != scenes.prepared.size())
     throw PlanError(
         "plan scenes mix sun and spot lights: one filter reads its map through one projection; plan "

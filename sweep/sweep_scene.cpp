@@ -51,7 +51,11 @@ ResolvedScene resolveScene(const SceneEntry& entry, const std::filesystem::path&
     if (j["light"].value("type", std::string("spot")) == "sun")
       throw rt::SceneError(fmt::format("{}: error: light: a sun has an angle, not a size to replace", entry.scene));
     j["name"] = entry.label;
-    j["light"]["size"] = *entry.lightSize;
+    // A point light's size is its diameter (the frame's lightWidth, 2 radius).
+    if (j["light"].value("type", std::string("spot")) == "point")
+      j["light"]["radius"] = 0.5 * *entry.lightSize;
+    else
+      j["light"]["size"] = *entry.lightSize;
     if (j.contains("objects") && j["objects"].is_array())
       for (auto& o : j["objects"])
         if (o.is_object() && o.contains("path") && o["path"].is_string() &&
@@ -63,7 +67,7 @@ ResolvedScene resolveScene(const SceneEntry& entry, const std::filesystem::path&
   }
   const rt::Scene scene = rt::loadScene(r.nameOrPath);
   r.hash = scene.contentHash();
-  r.lightWidth = scene.light.width;
+  r.lightWidth = scene.light.type == rt::LightType::Point ? 2.0f * scene.light.radius : scene.light.width;
   return r;
 }
 

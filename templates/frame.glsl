@@ -25,7 +25,7 @@ shadowc_Frame shadowc_frame();
 #ifndef SHADOWC_FRAME_EXTERNAL
 #include "frame_block.glsl"
 #endif
-#ifndef SHADOWC_LIGHT_ORTHO  // a spot light; a sun (orthographic map) is frame_ortho.glsl
+#if !defined(SHADOWC_LIGHT_ORTHO) && !defined(SHADOWC_LIGHT_CUBE)  // spot; sun, point below
 // World position -> (uv, normalized depth d, view z).
 vec4 shadowc_lightSpace(vec3 worldPos) {
   vec3 p = (shadowc_frame().lightView * vec4(worldPos, 1.0)).xyz;
@@ -52,6 +52,8 @@ float shadowc_searchWidthUV(float lightWidth, float zr) {
 float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb) {
   return shadowc_lightSizeUV(lightWidth) * shadowc_frame().lightParams.y * (zr - zb) / (zb * zr);
 }
+#elif defined(SHADOWC_LIGHT_CUBE)
+#include "frame_cube.glsl"
 #else
 #include "frame_ortho.glsl"
 #endif

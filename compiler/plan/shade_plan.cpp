@@ -70,7 +70,20 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
     const bool diskTaps = s.representation == Representation::Depth && s.sampling.pattern == PcfPattern::Poisson;
     defReal("SHADOWC_SUN_BOX_SCALE", diskTaps ? 1.0 : std::sqrt(3.0) / 2.0);
   }
-  if (!s.light.sizeFromScene)
+  // A point light (frame_cube.glsl): six perspective faces in a 3x3 atlas of the map, each with a
+  // guard band; kernels are clamped to what the band holds (docs/dsl.md "Point lights").
+  const bool cube = s.light.type == LightType::Point;
+  if (cube) {
+    defBool("SHADOWC_LIGHT_CUBE", true);
+    // The runtime renders faces with tan(half fov) = 1.5 (kCubeTanHalf): a band of
+    // g = (1 - 1/1.5) / 2 = 1/6 of the face outside its 90 degrees. A kernel of width w reaches
+    // w/2 + 1.5 texels from the receiver, a trilinear fetch at lod log2(w) up to 3w; keep a sixth
+    // of the band for a blur prefilter's radius: w <= 1.5 g = 0.25, or g / 3 = 1/18 with mips.
+    defReal("SHADOWC_CUBE_KERNEL_MAX", s.prefilter.mips ? 1.0 / 18.0 : 0.25);
+  }
+  if (!s.light.sizeFromScene && cube)
+    defReal("SHADOWC_LIGHT_WIDTH", 2.0 * s.light.size);  // the sphere's diameter
+  else if (!s.light.sizeFromScene)
     defReal("SHADOWC_LIGHT_WIDTH", sun                                  ? sunPenumbraSlope(s.light.angleDegrees)
                                    : s.light.shape == LightShape::Point ? 0.0
                                                                         : s.light.size);

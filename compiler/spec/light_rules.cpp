@@ -14,8 +14,9 @@ void reportAt(dsl::DiagnosticSink& sink, const dsl::Setting& s, DiagId id, const
               v ? s.value.length : static_cast<int>(s.keyword.size()), args...);
 }
 
-// Why a technique cannot filter across the faces of a cube map, or nullptr when it could
-// (then only the missing cube maps refuse it).
+// Why a technique cannot filter across the faces of a cube map, or nullopt when it can: the faces
+// sit in a 3x3 atlas of the 2D map, each rendered with a guard band (frame_cube.glsl), so PCF,
+// PCSS and moments fetches within the band are exact, but a box sum or a tile has no band.
 struct CubeRefusal {
   const char* what;
   const char* why;
@@ -41,8 +42,11 @@ void checkLightRules(const FilterSpec& spec, const SettingsRead& given, dsl::Dia
   if (spec.light.type == LightType::Point && given.light) {
     if (auto refusal = cubeRefusal(spec))
       reportAt(sink, *given.light, DiagId::pointLightCubeSeams, refusal->what, refusal->why);
-    else
-      reportAt(sink, *given.light, DiagId::pointLightNotImplemented);
+    else if (!spec.light.sizeFromScene && !(spec.light.size > 0) &&
+             (spec.blocker.kind != BlockerKind::None || spec.kernel.size == KernelSize::Penumbra))
+      // radius 0: hard cube shadows; nothing for a blocker estimate or penumbra kernel to size.
+      reportAt(sink, *given.light, DiagId::pointLightNotImplemented,
+               spec.blocker.kind != BlockerKind::None ? "a blocker estimate" : "a penumbra kernel");
   }
   if (given.cascades) {
     const char* why = spec.light.type == LightType::Sun

@@ -22,7 +22,7 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
   auto p = std::make_shared<PreparedScene>();
   p->settings = settings;
   p->scene = std::move(scene);
-  p->setup = setupFrame(p->scene, settings.map, settings.screen, settings.screen);
+  p->setup = setupFrame(p->scene, settings.map, settings.screen, settings.screen, settings.cubeTanHalf);
   p->raster = rasterize(ctx, p->scene, p->setup);
   const std::vector<float> positions = p->raster.gbufferPosition.floats();
   p->mask = geometryMask(positions);
@@ -49,15 +49,23 @@ SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, cons
                                 "' was prepared without its reference (traceReference = false)");
   // The runtime knows no technique, but the projection is the frame's: a filter reads the map
   // through its light's (frame.glsl or frame_ortho.glsl), so a sun filter needs a sun scene.
+  // A point filter reads a cube atlas (frame_cube.glsl), so it needs a point scene.
   const nlohmann::json& spec = passes.manifest.spec;
-  const bool sunFilter =
-      spec.contains("light") && spec["light"].is_object() && spec["light"].value("type", std::string("spot")) == "sun";
-  const bool sunScene = scene.scene.light.type == LightType::Sun;
-  if (sunFilter != sunScene)
+  const std::string filterType = spec.contains("light") && spec["light"].is_object()
+                                     ? spec["light"].value("type", std::string("spot"))
+                                     : std::string("spot");
+  const LightType sceneLight = scene.scene.light.type;
+  const std::string sceneType = sceneLight == LightType::Sun     ? "sun"
+                                : sceneLight == LightType::Point ? "point"
+                                                                 : "spot";
+  auto what = [](const std::string& t) { return t == "sun" ? "sun" : t == "point" ? "point light" : "spot light"; };
+  if (filterType != sceneType)
     throw std::invalid_argument(fmt::format(
         "filter '{}' is for a {} but scene '{}' has a {}: compile the filter with 'light {}' (docs/dsl.md \"light\")",
-        passes.manifest.filter, sunFilter ? "sun" : "spot light", scene.scene.name, sunScene ? "sun" : "spot light",
-        sunScene ? "sun" : "area(size: scene)"));
+        passes.manifest.filter, what(filterType), scene.scene.name, what(sceneType),
+        sceneType == "sun"     ? "sun"
+        : sceneType == "point" ? "point(radius: scene)"
+                               : "area(size: scene)"));
   RunInputs inputs;
   inputs.frame = scene.setup.frame;
   inputs.mapSize = scene.setup.mapSize;

@@ -29,6 +29,9 @@ struct SceneSettings {
   // false: rasterize only, no Embree trace (`shadowc analyze` reads the light depth map and the
   // G-buffer alone); PreparedScene::reference stays empty and runOnScene refuses the scene.
   bool traceReference = true;
+  // A point light's face half-fov tangent (cube_setup.h): 1.5 gives the guard band the lookup's
+  // kernels need at face seams; 1 (no band) only for the seam test's failing sibling.
+  float cubeTanHalf = kCubeTanHalf;
 };
 
 // The scene side, computed once and reusable for many filters (a sweep runs every variant on it).

@@ -1,11 +1,11 @@
 #include "runtime/raster/rasterizer.h"
 
+#include <fmt/core.h>
+
 #include <cstring>
+#include <glm/gtc/type_ptr.hpp>
 #include <string>
 #include <vector>
-
-#include <fmt/core.h>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "backend/spirv_backend.h"
 #include "runtime/raster/raster_shaders.h"
@@ -91,12 +91,14 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
   for (ImageFormat f : spec.colors) {
     const VkFormat vf = vkFormatOf(f);
     if (!(ctx.formatFeatures(vf) & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT))
-      throw VulkanError(fmt::format("rasterize: {} is not a color attachment format on {}", toString(f), ctx.deviceName()));
+      throw VulkanError(
+          fmt::format("rasterize: {} is not a color attachment format on {}", toString(f), ctx.deviceName()));
     targets.push_back(createImage(ctx, vf, spec.width, spec.height, 1, 1,
                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT));
     views.push_back(createView(ctx, targets.back(), VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1));
   }
-  Image depth = createImage(ctx, depthFormat, spec.width, spec.height, 1, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+  Image depth =
+      createImage(ctx, depthFormat, spec.width, spec.height, 1, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
   UniqueImageView depthView = createView(ctx, depth, VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1);
 
   const uint32_t n = uint32_t(spec.colors.size());
@@ -283,6 +285,23 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
   return out;
 }
 
+// A point light's light depth (cube_setup.h): each face rendered on its own into an N x N target
+// (N = the atlas cell), copied into its cell of the mapSize^2 atlas; the rest stays "nothing hit".
+HostImage renderCubeAtlas(VulkanContext& ctx, const Geometry& geometry, const FrameSetup& setup, PassSpec light) {
+  const uint32_t n = cubeCellSize(setup.mapSize);
+  std::vector<float> atlas(size_t(setup.mapSize) * setup.mapSize, 1.0f);
+  light.width = light.height = n;
+  for (int face = 0; face < 6; ++face) {
+    std::memcpy(light.push.viewProj, glm::value_ptr(setup.faceViewProj[face]), sizeof light.push.viewProj);
+    for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = setup.faceZRow[face][c];
+    const std::vector<float> texels = renderOffscreen(ctx, geometry, light).at(0).floats();
+    const glm::uvec2 o = cubeCellOrigin(face, setup.mapSize);
+    for (uint32_t y = 0; y < n; ++y)
+      std::memcpy(&atlas[size_t(o.y + y) * setup.mapSize + o.x], &texels[size_t(y) * n], n * sizeof(float));
+  }
+  return HostImage::fromFloats(setup.mapSize, setup.mapSize, ImageFormat::R32F, atlas);
+}
+
 }  // namespace
 
 RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup& setup) {
@@ -302,7 +321,8 @@ RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup
   for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = setup.lightView[c][2];  // row 2 of a column-major matrix
   light.push.depthRange[0] = setup.nearPlane;
   light.push.depthRange[1] = setup.farPlane;
-  out.lightDepth = std::move(renderOffscreen(ctx, geometry, light).at(0));
+  out.lightDepth = setup.cube ? renderCubeAtlas(ctx, geometry, setup, light)
+                              : std::move(renderOffscreen(ctx, geometry, light).at(0));
 
   PassSpec camera;
   camera.width = setup.width;

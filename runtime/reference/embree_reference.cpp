@@ -54,11 +54,12 @@ class PixelTracer {
   PixelTracer(const EmbreeScene& embree, int samplesPerAxis, ReferenceMeasure measure)
       : embree_(embree),
         light_(embree.scene().light),
-        n_(light_.width > 0 || light_.type == LightType::Sun ? samplesPerAxis : 1),
+        n_(light_.width > 0 || light_.type != LightType::Spot ? samplesPerAxis : 1),
         measure_(measure) {}
 
   PixelValue visibility(const glm::vec3& p, const glm::vec3& normal, uint64_t pixelIndex) const {
     if (light_.type == LightType::Sun) return sunVisibility(p, normal, pixelIndex);
+    if (light_.type == LightType::Point) return pointVisibility(p, normal, pixelIndex);
     const glm::vec3 org = p + normalOffset(p, light_.position) * normal;
     const bool weighted = measure_ == ReferenceMeasure::ShadowingTerm;
     // Double sums: 1024^2 samples of weights spanning many orders of magnitude (depth_range).
@@ -119,6 +120,34 @@ class PixelTracer {
     return {static_cast<float>(std::clamp(unoccluded / total, 0.0, 1.0)), rays};
   }
 
+  // A point light: stratified directions on the cone the sphere subtends (pointSampleDirection),
+  // equal solid angle each, weighted by cos(theta_receiver): over the sphere cos_l dA / r^2 = dw,
+  // so this is the ratio estimator of docs/scenes.md; directions below the tangent plane are not
+  // part of the shadowing term's light. Each ray ends on the sphere's near surface.
+  PixelValue pointVisibility(const glm::vec3& p, const glm::vec3& normal, uint64_t pixelIndex) const {
+    const glm::vec3 org = p + normalOffset(p, light_.position) * normal;
+    const bool weighted = measure_ == ReferenceMeasure::ShadowingTerm;
+    const glm::dvec3 toCentre = glm::dvec3(light_.position) - glm::dvec3(org);
+    const double dist2 = glm::dot(toCentre, toCentre), r2 = double(light_.radius) * light_.radius;
+    double unoccluded = 0, total = 0;
+    int rays = 0;
+    for (int j = 0; j < n_; ++j) {
+      for (int i = 0; i < n_; ++i) {
+        const uint64_t h = mix(mix(pixelIndex ^ kJitterSeed) + static_cast<uint64_t>(j * n_ + i));
+        const glm::vec3 dir = pointSampleDirection(light_, org, i, j, n_, unitFloat(h), unitFloat(mix(h)));
+        const double cosR = glm::dot(glm::dvec3(normal), glm::dvec3(dir));
+        if (weighted && cosR <= 0) continue;
+        const double w = weighted ? cosR : 1.0;
+        total += w;
+        ++rays;
+        const double b = glm::dot(toCentre, glm::dvec3(dir));
+        const double t = b - std::sqrt(std::max(0.0, b * b - (dist2 - r2)));
+        if (cosR > 0 && !embree_.occluded(org, dir * static_cast<float>(std::max(t, 0.0)), 1.0f)) unoccluded += w;
+      }
+    }
+    if (total <= 0) return {0.0f, rays};
+    return {static_cast<float>(std::clamp(unoccluded / total, 0.0, 1.0)), rays};
+  }
   const EmbreeScene& embree_;
   const AreaLight& light_;
   float rayLength_ = 2.0f * std::max(sceneBounds(embree_.scene()).diagonal(), 1.0f);
@@ -221,6 +250,25 @@ glm::vec3 sunSampleDirection(const AreaLight& light, int i, int j, int n, float 
   const LightBasis b = lightBasis(light);
   const glm::dvec3 d = -glm::dvec3(b.z) * cosT +
                        (glm::dvec3(b.x) * std::cos(double(phi)) + glm::dvec3(b.y) * std::sin(double(phi))) * sinT;
+  return glm::vec3(glm::normalize(d));
+}
+
+glm::vec3 pointSampleDirection(const AreaLight& light, const glm::vec3& from, int i, int j, int n, float ju, float jv) {
+  const float u = (static_cast<float>(i) + ju) / static_cast<float>(n);
+  const float v = (static_cast<float>(j) + jv) / static_cast<float>(n);
+  float r = 0, phi = 0;
+  concentricDisk(u, v, r, phi);
+  const glm::dvec3 toCentre = glm::dvec3(light.position) - glm::dvec3(from);
+  const double dist = glm::length(toCentre);
+  const glm::dvec3 axis = toCentre / dist;
+  const double sinMax = std::min(1.0, double(light.radius) / dist);
+  const double cosMax = std::sqrt(std::max(0.0, 1.0 - sinMax * sinMax));
+  const double cosT = 1.0 - double(r) * double(r) * (1.0 - cosMax);
+  const double sinT = std::sqrt(std::max(0.0, 1.0 - cosT * cosT)) * (r < 0 ? -1.0 : 1.0);
+  const glm::dvec3 helper = std::abs(axis.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  const glm::dvec3 bx = glm::normalize(glm::cross(helper, axis));
+  const glm::dvec3 by = glm::cross(axis, bx);
+  const glm::dvec3 d = axis * cosT + (bx * std::cos(double(phi)) + by * std::sin(double(phi))) * sinT;
   return glm::vec3(glm::normalize(d));
 }
 

@@ -77,5 +77,9 @@ glm::vec3 lightSamplePoint(const AreaLight& light, int i, int j, int n, float ju
 // mapped onto the cap of half-angle angle / 2 around -light.direction, equal solid angle per
 // stratum. Exposed for tests.
 glm::vec3 sunSampleDirection(const AreaLight& light, int i, int j, int n, float ju, float jv);
+// A point light's direction (unit, from `from` towards the sphere) for stratum (i, j) of n x n:
+// the same equal-solid-angle cap mapping on the cone that the sphere subtends from `from`
+// (half-angle asin(radius / distance)). Exposed for tests.
+glm::vec3 pointSampleDirection(const AreaLight& light, const glm::vec3& from, int i, int j, int n, float ju, float jv);
 
 }  // namespace shadowc::rt

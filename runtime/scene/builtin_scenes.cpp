@@ -36,6 +36,11 @@ ordered_json sun(ordered_json direction, double angleDegrees, ordered_json up = 
   return {{"type", "sun"}, {"direction", direction}, {"up", up}, {"angle", angleDegrees}};
 }
 
+// A point light: a sphere of `radius` at `position`, shining every way (docs/scenes.md).
+ordered_json pointLight(ordered_json position, double radius) {
+  return {{"type", "point"}, {"position", position}, {"radius", radius}};
+}
+
 ordered_json transform(ordered_json translate, ordered_json rotate = nullptr, ordered_json scale = nullptr) {
   ordered_json t = {{"translate", translate}};
   if (!rotate.is_null()) t["rotate"] = rotate;
@@ -209,6 +214,22 @@ const std::map<std::string, ordered_json>& builtins() {
                box("building_b", v3(2, 3.5, 4), transform(v3(3, 1.75, -5))),
                box("wall", v3(6, 1.2, 0.3), transform(v3(0, 0.6, 3))), sphere("sphere", 1.0, transform(v3(4, 1, 3))),
                box("pole", v3(0.15, 5, 0.15), transform(v3(-2, 2.5, 5)))});
+    // A room lit by a point light at 1.5 m: floor, back and side walls, casters on the floor. Seen
+    // from the light, the floor's cube-face seams are the lines |x| = 1.5 and |z| = 1.5; the box
+    // at x = 1.5, the crate at z = -1.5 and the sphere near the corner x = z = -1.5 throw shadows
+    // across them (tests/gpu/point_room_test.cpp measures the error there).
+    t["point_room"] =
+        scene("point_room",
+              "A 6 m room (floor, back and side walls) lit by a 0.15 m point light 1.5 m up: cube shadow maps, with "
+              "casters whose penumbrae cross the faces' seams on the floor and shadows that climb the walls.",
+              camera(v3(0, 4.6, 6.8), v3(0, 0.4, -0.2), 55), pointLight(v3(0, 1.5, 0), 0.15),
+              {floorPlane(6), plane("back_wall", 6, 3, transform(v3(0, 1.5, -3), v3(90, 0, 0))),
+               plane("left_wall", 3, 6, transform(v3(-3, 1.5, 0), v3(0, 0, -90))),
+               plane("right_wall", 3, 6, transform(v3(3, 1.5, 0), v3(0, 0, 90))),
+               box("seam_box", v3(0.4, 0.7, 0.4), transform(v3(1.5, 0.35, 0.4))),
+               box("seam_crate", v3(0.8, 0.5, 0.5), transform(v3(-0.3, 0.25, -1.5), v3(0, 20, 0))),
+               sphere("corner_sphere", 0.3, transform(v3(-1.4, 0.55, 1.3))),
+               box("pillar", v3(0.2, 1.0, 0.2), transform(v3(0.9, 0.5, 1.6)))});
     return t;
   }();
   return table;

@@ -147,7 +147,7 @@ void fitCamera(const Scene& scene, FrameSetup& f) {
 
 }  // namespace
 
-FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint32_t height) {
+FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint32_t height, float cubeTanHalf) {
   if (mapSize == 0 || width == 0 || height == 0) {
     throw SceneError(fmt::format("setupFrame: sizes must be positive (map {}, screen {}x{})", mapSize, width, height));
   }
@@ -156,7 +156,11 @@ FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint
   f.width = width;
   f.height = height;
   f.lightView = lightViewMatrix(scene.light);
-  if (scene.light.type == LightType::Sun) {
+  if (scene.light.type == LightType::Point) {
+    if (mapSize < 3)
+      throw SceneError(fmt::format("setupFrame: a point light's map of {} has no 3x3 face atlas", mapSize));
+    fitPoint(scene, f, cubeTanHalf);
+  } else if (scene.light.type == LightType::Sun) {
     fitSun(scene, f);
   } else {
     fitSpot(scene, f);
@@ -172,7 +176,9 @@ FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint
   f.frame.lightParams[3] =
       sun ? static_cast<float>(2.0 * std::tan(0.5 * glm::radians(double(scene.light.angleDegrees))))
           : scene.light.width;
-  f.frame.lightShape[0] = sun                      ? 3.0f
+  if (f.cube) f.frame.lightParams[3] = 2.0f * scene.light.radius;  // the sphere's diameter (frame_cube.glsl)
+  f.frame.lightShape[0] = f.cube                   ? 4.0f
+                          : sun                    ? 3.0f
                           : scene.light.width <= 0 ? 2.0f
                                                    : (scene.light.shape == LightShape::Disk ? 1.0f : 0.0f);
   f.frame.mapInfo[0] = static_cast<float>(mapSize);

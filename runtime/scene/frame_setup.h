@@ -2,10 +2,12 @@
 // (templates/frame.glsl conventions) plus the matrices the rasterizer needs.
 #pragma once
 
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 
 #include "manifest/frame_uniforms.h"
+#include "runtime/scene/cube_setup.h"
 #include "runtime/scene/scene.h"
 
 namespace shadowc::rt {
@@ -20,6 +22,11 @@ struct FrameSetup {
   // tanHalfFov is then unused.
   bool orthographic = false;
   float halfExtent = 0;
+  // A point light (LightType::Point, cube_setup.h): six faces in a 3x3 atlas of the map, each with
+  // its clip matrix and light-depth z row; tanHalfFov is the faces' (with the guard band).
+  bool cube = false;
+  std::array<glm::mat4, 6> faceViewProj{};
+  std::array<glm::vec4, 6> faceZRow{};
   uint32_t mapSize = 1024, width = 512, height = 512;
   // Camera parts of cameraViewProj (= cameraProj * cameraView), for G-buffer shaders and tools.
   glm::mat4 cameraView{1};  // world -> camera view (right-handed, looking down -z)
@@ -39,6 +46,8 @@ glm::mat4 lightViewMatrix(const AreaLight& light);
 // The light frustum covers the scene's bounds as seen from the light centre; near/far are
 // fitted to the bounds (near clamped > 0). A sun's orthographic box covers every vertex, its
 // view origin placed on the scene's bounding sphere, upstream along the sun's direction.
-FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint32_t height);
+// cubeTanHalf: a point light's face half-fov tangent (cube_setup.h; 1 only for the seam test).
+FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint32_t height,
+                      float cubeTanHalf = kCubeTanHalf);
 
 }  // namespace shadowc::rt

@@ -24,10 +24,13 @@ enum class LightShape { Rect, Disk };
 // Spot: an area light at `position` shining along `direction` (a perspective shadow map from its
 // centre). Sun: a directional light travelling along `direction` with angular diameter
 // `angleDegrees` (an orthographic map fitted to the scene; `position`, `shape` and `width` unused).
-enum class LightType { Spot, Sun };
+// Point: an omnidirectional sphere light of `radius` at `position` (six cube faces in a 3x3 atlas
+// of the shadow map, runtime/scene/cube_setup.h; `direction`, `up`, `shape` and `width` unused).
+enum class LightType { Spot, Sun, Point };
 struct AreaLight {
   LightType type = LightType::Spot;
   float angleDegrees = 0.0f;  // Sun: angular diameter (the sun: about 0.53)
+  float radius = 0.0f;        // Point: the sphere's radius
   LightShape shape = LightShape::Rect;
   glm::vec3 position{0, 10, 0};   // centre
   glm::vec3 direction{0, -1, 0};  // unit axis, into the scene

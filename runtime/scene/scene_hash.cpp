@@ -65,6 +65,10 @@ std::string Scene::contentHash() const {
     h.str("sun");
     h.pod(light.angleDegrees);
   }
+  if (light.type == LightType::Point) {
+    h.str("point");
+    h.pod(light.radius);
+  }
   h.pod(static_cast<uint64_t>(meshes.size()));
   for (const Mesh& m : meshes) {
     h.str(m.name);

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "runtime/scene/cube_setup.h"
 #include "runtime/scene/mesh_loader.h"
 #include "runtime/scene/scene.h"
 #include "runtime/scene/scene_geometry.h"
@@ -165,9 +166,22 @@ AreaLight readLight(const Reader& r, const json& j) {
       l.angleDegrees = static_cast<float>(angle);
       return l;
     }
+    if (type == "point") {
+      // An omnidirectional sphere light: a centre and a radius; it shines every way.
+      r.checkKeys(j, p, {"type", "position", "radius"});
+      l.type = LightType::Point;
+      l.shape = LightShape::Disk;
+      l.width = 0.0f;
+      l.position = r.vec3(r.require(j, p, "position"), p + ".position");
+      const double radius = r.number(r.require(j, p, "radius"), p + ".radius");
+      if (!(radius > 0 && radius <= 1e4))
+        r.fail(p + ".radius", fmt::format("expected a sphere radius in (0, 10000], got {}", radius));
+      l.radius = static_cast<float>(radius);
+      return l;
+    }
     if (type != "spot") {
-      const std::string near = support::closestMatch(type, {"spot", "sun"});
-      r.fail(p + ".type", fmt::format("unknown light type '{}' (expected spot or sun{})", type,
+      const std::string near = support::closestMatch(type, {"spot", "sun", "point"});
+      r.fail(p + ".type", fmt::format("unknown light type '{}' (expected spot, sun or point{})", type,
                                       near.empty() ? "" : fmt::format("; did you mean '{}'?", near)));
     }
   }
@@ -306,6 +320,14 @@ Scene parseScene(const std::string& jsonText, const std::string& sourceLabel, co
     // The shadow map is a perspective projection from the light centre (frame.glsl): it cannot
     // cover geometry on or behind the light's plane, and an area light emits only forwards.
     if (scene.light.type == LightType::Sun) continue;  // an orthographic map covers any side
+    if (scene.light.type == LightType::Point) {
+      // Six faces cover every side; the sphere itself must stay clear of the geometry.
+      const float d = minDistanceToMesh(scene.meshes.back(), scene.light.position);
+      if (!(d > scene.light.radius))
+        r.fail(p, fmt::format("'{}' comes within {:g} of the point light's centre, inside its radius {:g}",
+                              scene.meshes.back().name, d, scene.light.radius));
+      continue;
+    }
     float minZ = std::numeric_limits<float>::max();
     for (const glm::vec3& v : scene.meshes.back().positions) {
       minZ = std::min(minZ, glm::dot(v - scene.light.position, scene.light.direction));

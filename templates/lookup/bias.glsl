@@ -61,4 +61,20 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal) {
 }
 #endif
 
+
+#ifdef SHADOWC_LIGHT_CUBE
+// A point light (frame_cube.glsl): L towards the light's centre as for a spot, a texel of the
+// receiver's face 2 z_f tanHalf / N wide (N = the atlas cell), and every direction is in front.
+#undef shadowc_biasedLightPosition
+vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal) {
+  vec3 p = worldPos;
+#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_NORMAL_OFFSET_KIND
+  float zf = shadowc_lightSpace(worldPos).w;
+  float texelWorld = 2.0 * zf * shadowc_frame().lightParams.x / float(shadowc_mapSize().x / 3);
+  p += worldNormal * (SHADOWC_NORMAL_OFFSET * texelWorld);
+#endif
+  return vec4(p, 1.0);
+}
+#endif
+
 #endif

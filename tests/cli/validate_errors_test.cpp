@@ -112,5 +112,30 @@ TEST(ValidateErrors, SiblingASunFilterValidatesOnASunScene) {
   EXPECT_EQ(errorLines(r.err), 0) << r.err;
 }
 
+// Point lights (issue 14 item 4): a spot filter on point_room is one error naming the fix; a
+// point filter on a spot scene too; the point filter validates on point_room (the sibling).
+TEST(ValidateErrors, SpotFilterOnPointScene) {
+  expectOneError(test::runShadowc("validate " + kFilter + " --scene point_room" + kSmall),
+                 "compile the filter with 'light point(radius: scene)'");
+}
+
+TEST(ValidateErrors, PointFilterOnSpotScene) {
+  const auto file = writeTemp("point-filter-spot", "pcf_point.shadow",
+                              "filter pcf_point {\n    light point(radius: scene)\n    depth\n    kernel fixed(5)\n"
+                              "    sampling grid(5x5)\n}\n");
+  expectOneError(test::runShadowc("validate " + file.string() + " --scene two_planes" + kSmall),
+                 "is for a point light but scene 'two_planes' has a spot light");
+}
+
+TEST(ValidateErrors, SiblingAPointFilterValidatesOnAPointScene) {
+  const auto file = writeTemp("point-filter", "pcf_point.shadow",
+                              "filter pcf_point {\n    light point(radius: scene)\n    depth\n    kernel fixed(5)\n"
+                              "    sampling grid(5x5)\n}\n");
+  const test::CliResult r = test::runShadowc("validate " + file.string() + " --scene point_room" + kSmall);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rmse"), std::string::npos) << r.out;
+  EXPECT_EQ(errorLines(r.err), 0) << r.err;
+}
+
 }  // namespace
 }  // namespace shadowc
