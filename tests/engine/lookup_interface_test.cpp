@@ -225,7 +225,9 @@ TEST(LookupInterface, TheReceiverPlaneCanComeFromScreenSpaceDerivatives) {
   ASSERT_NE(lookup.find("shadowc_tapDepth"), std::string::npos);
   const std::string main = R"(
 void main() {
-  float v = shadowc_visibility(worldPos, cross(dFdx(worldPos), dFdy(worldPos)));
+  vec3 face = normalize(cross(dFdx(worldPos), dFdy(worldPos)));
+  face = dot(face, worldNormal) < 0.0 ? -face : face;
+  float v = shadowc_visibility(worldPos, face);
   color = frame.viewProj * vec4(v);
 }
 )";
@@ -236,6 +238,7 @@ void main() {
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, std140) uniform Frame { mat4 viewProj; mat4 lightView; vec4 light; } frame;
 vec3 worldPos = vec3(0.0);
+vec3 worldNormal = vec3(0.0, 1.0, 0.0);
 vec4 color;
 )";
   const SpirvResult c = compileGlsl(computeHead + lookup + main, ShaderStage::Compute, "shade.comp", {}, {false, true});
