@@ -93,6 +93,8 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   defReal("SHADOWC_BIAS_CONSTANT", s.bias.constant);
   defReal("SHADOWC_BIAS_SLOPE", s.bias.slope);
   defReal("SHADOWC_NORMAL_OFFSET", s.bias.normalOffset);
+  // Only for the receiver-plane policy (bias.glsl), so the other filters' defines are unchanged.
+  if (s.bias.kind == BiasKind::ReceiverPlane) defReal("SHADOWC_BIAS_MAX_SLOPE", s.bias.maxSlope);
 
   // ---- kernel -----------------------------------------------------------------------------
   defBool("SHADOWC_KERNEL_PENUMBRA", s.kernel.size == KernelSize::Penumbra);

@@ -110,6 +110,8 @@ constexpr EnumCode biasKindCode(BiasKind k) {  // SHADOWC_BIAS_KIND
       return {"SHADOWC_BIAS_SLOPE_SCALED_KIND", 1};
     case BiasKind::NormalOffset:
       return {"SHADOWC_BIAS_NORMAL_OFFSET_KIND", 2};
+    case BiasKind::ReceiverPlane:
+      return {"SHADOWC_BIAS_RECEIVER_PLANE_KIND", 3};
   }
   return {"SHADOWC_BIAS_CONSTANT_KIND", 0};
 }

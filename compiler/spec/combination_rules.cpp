@@ -88,6 +88,7 @@ enum class Caret {
   Fallback,
   Contact,
   Bleeding,
+  Bias,
   KernelElseStorage,         // the kernel setting when written, else storage
   LayersElseRepresentation,  // the `layers:` value when written, else the representation
   Exponent,
@@ -234,6 +235,16 @@ const Rule kRules[] = {
      [](const Facts&, Args& a) {
        push(a, "fallback", "PCF replaces the non-planar sub-kernels of the VSSM walks (vssm sec. 5.1-5.2), which need 'blocker moments'");
      }},
+    // The receiver plane moves depth taps only (bias.glsl); a moments filter has some only in the
+    // VSSM fallback and contact PCF.
+    {DiagId::noEffect, Caret::Bias,
+     [](const Facts& f) {
+       return f.moments && f.s.bias.kind == BiasKind::ReceiverPlane &&
+              !(f.vssm() && (f.s.fallback.pcf || f.s.contact.enabled));
+     },
+     [](const Facts&, Args& a) {
+       push(a, "receiver_plane", "it offsets depth taps, and this filter reads none (only VSSM's 'fallback pcf' and 'contact pcf' do); only its constant and normal_offset apply");
+     }},
     {DiagId::noEffect, Caret::Kernel,
      [](const Facts& f) {
        const KernelSpec& k = f.s.kernel;
@@ -325,6 +336,8 @@ Span caretOf(Caret c, const Facts& f, const dsl::FilterDecl& filter) {
       return settingSpan(r.contact, filter);
     case Caret::Bleeding:
       return settingSpan(r.bleeding, filter);
+    case Caret::Bias:
+      return settingSpan(r.bias, filter);
     case Caret::KernelElseStorage:
       return settingSpan(r.kernel ? r.kernel : r.storage, filter);
     case Caret::LayersElseRepresentation:

@@ -130,6 +130,8 @@ const char* name(BiasKind v) {
       return "slope";
     case BiasKind::NormalOffset:
       return "normal_offset";
+    case BiasKind::ReceiverPlane:
+      return "receiver_plane";
   }
   return "?";
 }
@@ -189,6 +191,8 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
                 {"constant", s.bias.constant},
                 {"slope", s.bias.slope},
                 {"normal_offset", s.bias.normalOffset}};
+  // Written only for that policy, so the manifests of the other policies stay byte-identical.
+  if (s.bias.kind == BiasKind::ReceiverPlane) j["bias"]["max_slope"] = s.bias.maxSlope;
   j["fallback"] = J{{"pcf", s.fallback.pcf}, {"n", s.fallback.n}};
   j["contact"] = J{{"enabled", s.contact.enabled}, {"n", s.contact.n}, {"epsilon", s.contact.epsilon}};
   j["early_out_minmax"] = s.earlyOutMinMax;

@@ -144,12 +144,16 @@ struct SamplingSpec {
 };
 
 // ---- extras ------------------------------------------------------------------------------
-enum class BiasKind { Constant, SlopeScaled, NormalOffset };
+enum class BiasKind { Constant, SlopeScaled, NormalOffset, ReceiverPlane };
 struct BiasSpec {
   BiasKind kind = BiasKind::Constant;
   double constant = 1e-3;  // Constant: b; SlopeScaled: max(slope*(1 - N.L), constant)
   double slope = 5e-3;
   double normalOffset = 0;  // NormalOffset: world units along N, scaled by texel size
+  // ReceiverPlane (Isidoro 2006): each tap compares against the receiver's tangent plane at that
+  // texel, d + dot(dd/dtexel, tap - centre) - constant; the plane's depth slope (light-view depth
+  // per unit across the light's direction) is clamped to maxSlope (~84 degrees for 10).
+  double maxSlope = 10;
 };
 struct FallbackSpec {
   bool pcf = false;  // PCF on non-planar leaves (vssm sec. 5.2 option 2)

@@ -166,6 +166,9 @@ std::string bias(const BiasSpec& b) {
       return call("slope", {"slope: " + num(b.slope), "constant: " + num(b.constant)});
     case BiasKind::NormalOffset:
       return call("normal_offset", {"offset: " + num(b.normalOffset), "constant: " + num(b.constant)});
+    case BiasKind::ReceiverPlane:
+      return call("receiver_plane", {"constant: " + num(b.constant), "max_slope: " + num(b.maxSlope),
+                                     "normal_offset: " + num(b.normalOffset)});
   }
   return "constant";
 }

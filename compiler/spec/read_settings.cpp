@@ -87,7 +87,7 @@ class SettingsReader : ValueReader {
     else if (s.keyword == "sampling")
       out_.sampling = &s, readSampling(v, what);
     else if (s.keyword == "bias")
-      readBias(v, what);
+      out_.bias = &s, readBias(v, what);
     else if (s.keyword == "fallback")
       out_.fallback = &s, readFallback(v, what);
     else if (s.keyword == "contact")
@@ -397,28 +397,40 @@ class SettingsReader : ValueReader {
   }
 
   void readBias(const Value& v, const std::string& what) {
-    auto idx = variant(v, what, {"constant", "slope", "normal_offset"});
+    auto idx = variant(v, what, {"constant", "slope", "normal_offset", "receiver_plane"});
     if (!idx) return;
     BiasSpec& bias = out_.spec.bias;
-    const BiasKind kinds[] = {BiasKind::Constant, BiasKind::SlopeScaled, BiasKind::NormalOffset};
+    const BiasKind kinds[] = {BiasKind::Constant, BiasKind::SlopeScaled, BiasKind::NormalOffset,
+                              BiasKind::ReceiverPlane};
     bias.kind = kinds[*idx];
-    const std::string_view first = *idx == 0 ? "value" : *idx == 1 ? "slope" : "offset";
-    std::vector<Param> params = {{first, true}};
-    if (*idx != 0) params.push_back({"constant", false});
     Bound b;
-    if (!bind(v, params, b)) return;
-    const Value* x = get(b, first);
-    if (!x && *idx != 1) {
-      at(v, DiagId::missingArgument, v.text, first);
-      return;
-    }
-    if (*idx == 0) {
-      if (auto n = number(x, arg(first, v), Range{0, 1})) bias.constant = *n;
-    } else if (*idx == 1) {
-      if (x)
-        if (auto n = number(x, arg(first, v), Range{0, 10})) bias.slope = *n;
+    if (*idx == 3) {  // receiver_plane(constant: B, max_slope: S, normal_offset: O): all optional
+      // Default slope clamp 50 (88.9 degrees from the light): 10 clamped the 3-degree `grazing`
+      // floor (slope 19) and left 37 % acne under PCSS, 50 leaves 0.05 % (docs/accuracy.md "Bias").
+      bias.maxSlope = 50;
+      if (!bind(v, {{"constant", false}, {"max_slope", false}, {"normal_offset", false}}, b)) return;
+      if (const Value* x = get(b, "max_slope"))
+        if (auto n = number(x, arg("max_slope", v), Range{0, 1000, true})) bias.maxSlope = *n;
+      if (const Value* x = get(b, "normal_offset"))
+        if (auto n = number(x, arg("normal_offset", v), Range{0, 10})) bias.normalOffset = *n;
     } else {
-      if (auto n = number(x, arg(first, v), Range{0, 10})) bias.normalOffset = *n;
+      const std::string_view first = *idx == 0 ? "value" : *idx == 1 ? "slope" : "offset";
+      std::vector<Param> params = {{first, true}};
+      if (*idx != 0) params.push_back({"constant", false});
+      if (!bind(v, params, b)) return;
+      const Value* x = get(b, first);
+      if (!x && *idx != 1) {
+        at(v, DiagId::missingArgument, v.text, first);
+        return;
+      }
+      if (*idx == 0) {
+        if (auto n = number(x, arg(first, v), Range{0, 1})) bias.constant = *n;
+      } else if (*idx == 1) {
+        if (x)
+          if (auto n = number(x, arg(first, v), Range{0, 10})) bias.slope = *n;
+      } else {
+        if (auto n = number(x, arg(first, v), Range{0, 10})) bias.normalOffset = *n;
+      }
     }
     if (const Value* c = get(b, "constant"))
       if (auto n = number(c, arg("constant", v), Range{0, 1})) bias.constant = *n;

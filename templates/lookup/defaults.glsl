@@ -31,6 +31,7 @@
 #define SHADOWC_BIAS_CONSTANT_KIND 0
 #define SHADOWC_BIAS_SLOPE_SCALED_KIND 1
 #define SHADOWC_BIAS_NORMAL_OFFSET_KIND 2
+#define SHADOWC_BIAS_RECEIVER_PLANE_KIND 3
 
 // ---- resources ------------------------------------------------------------------------------
 #ifndef SHADOWC_SET
@@ -87,6 +88,9 @@
 #endif
 #ifndef SHADOWC_NORMAL_OFFSET
 #define SHADOWC_NORMAL_OFFSET 0.0  // along N, in shadow-map texels at the receiver
+#endif
+#ifndef SHADOWC_BIAS_MAX_SLOPE
+#define SHADOWC_BIAS_MAX_SLOPE 50.0  // receiver plane: clamp of its depth slope (bias.glsl)
 #endif
 
 // ---- kernel (texels of the shadow map) ------------------------------------------------------

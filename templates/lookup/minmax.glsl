@@ -33,10 +33,12 @@ vec2 shadowc_minMaxOfRect(ivec4 rect) {
 }
 
 // 1 = lit, 0 = umbra, -1 = undecided (penumbra candidate: run the filter).
-float shadowc_earlyOut(ivec4 rect, float d) {
+// dLo / dHi: the lowest and highest receiver depth any tap in the rectangle compares against
+// (equal but for the receiver-plane bias, bias.glsl).
+float shadowc_earlyOut(ivec4 rect, float dLo, float dHi) {
   vec2 mm = shadowc_minMaxOfRect(rect);
-  if (mm.x >= d) return 1.0;
-  if (mm.y < d) return 0.0;
+  if (mm.x >= dHi) return 1.0;
+  if (mm.y < dLo) return 0.0;
   return -1.0;
 }
 

@@ -19,8 +19,9 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
 #endif
   vec2 rot = shadowc_rotation(r.worldPos);
   for (int i = 0; i < SHADOWC_BLOCKER_TAPS; ++i) {
-    float z = shadowc_depthAt(ivec2(floor(r.texel + shadowc_rotate(shadowc_poissonBlocker[i], rot) * (0.5 * w))));
-    if (z < r.d) {
+    ivec2 t = ivec2(floor(r.texel + shadowc_rotate(shadowc_poissonBlocker[i], rot) * (0.5 * w)));
+    float z = shadowc_depthAt(t);
+    if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
       sum += z;
       count += 1.0;
     }
@@ -30,8 +31,9 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       vec2 pos = r.texel + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
-      float z = shadowc_depthAt(ivec2(floor(pos)));
-      if (z < r.d) {
+      ivec2 t = ivec2(floor(pos));
+      float z = shadowc_depthAt(t);
+      if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
         sum += z;
         count += 1.0;
       }

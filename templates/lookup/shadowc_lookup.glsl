@@ -59,6 +59,9 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r) {
   vec4 ls = shadowc_lightSpace(p.xyz);
   r.uv = ls.xy;
   r.texel = ls.xy * vec2(shadowc_mapSize());
+#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_RECEIVER_PLANE_KIND
+  shadowc_receiverPlaneBegin(p.xyz, worldNormal, r.texel);
+#endif
   r.d = ls.z - shadowc_bias(worldPos, worldNormal);
   r.zr = max(ls.w, shadowc_frame().lightParams.y);
   // Written so that NaN coordinates also count as outside.
@@ -87,7 +90,13 @@ float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
   if (!shadowc_receiver(worldPos, worldNormal, r)) return 1.0;
 #if SHADOWC_EARLY_OUT && SHADOWC_HAS_MINMAX
   // vssm-yang2010 sec. 6.1 / Algorithm 1 L8-L10.
-  float early = shadowc_earlyOut(shadowc_influenceRect(r), r.d);
+  ivec4 rect = shadowc_influenceRect(r);
+#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_RECEIVER_PLANE_KIND
+  vec2 span = r.d + shadowc_receiverPlaneRange(rect);
+#else
+  vec2 span = vec2(r.d);
+#endif
+  float early = shadowc_earlyOut(rect, span.x, span.y);
   if (early >= 0.0) return early;
 #endif
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM

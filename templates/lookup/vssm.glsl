@@ -109,7 +109,7 @@ void shadowc_qtResolveLeaf(ivec3 node) {
       ivec2 t = ivec2(box.xy) + ivec2(floor((vec2(i, j) + 0.5) * size / float(n)));
 #endif
       float z = shadowc_depthAt(t);
-      if (z < shadowc_vD) {
+      if (z < SHADOWC_TAP_DEPTH(t, shadowc_vD)) {  // the receiver plane at t (bias.glsl)
         occluded += 1.0;
         depthSum += z;
       }

@@ -3,7 +3,9 @@
 //   SHADOWC_SAT_KIND 1 int32:         uint32 16.16 fixed point, v in [0,1] -> uint(round(v * 65536)),
 //                                     sums wrap mod 2^32: box sums stay exact while each box sum fits
 //                                     in 32 bits (Lauritzen 2007 via vssm-yang2010 sec. 6.4; FACTS.md)
-//   SHADOWC_SAT_KIND 2 fp32 centered: fp32 sums of (v - 0.5) (FACTS.md: 7.7e-3 vs 0.23 at 2048^2)
+//   SHADOWC_SAT_KIND 2 fp32 centered: fp32 sums of (v - 0.5); the worst 1x1 box mean still errs
+//                                     0.09 / 0.11 at 2048^2 / 4096^2 (stability suite sat_box_mean_*,
+//                                     docs/stability.md; 0.11 / 0.97 uncentered, 7.5e-6 int32)
 //   SHADOWC_SAT_KIND 3 fp32 naive:    fp32 sums of v (kept to show the precision failure)
 // Inclusive convention: S(x, y) = sum of texels [0..x] x [0..y]. The box sum over texels
 // [x0, x1] x [y0, y1] is S(x1, y1) - S(x0-1, y1) - S(x1, y0-1) + S(x0-1, y0-1), where any term

@@ -166,6 +166,31 @@ std::vector<Variant> variants() {
     s.prefilter.mips = true;
     v.push_back({"vssm_mips_no_sat", s});
   }
+  {
+    // Receiver-plane bias (bias.glsl): every technique with depth taps, spot and sun.
+    FilterSpec s;
+    s.bias.kind = BiasKind::ReceiverPlane;
+    s.kernel.size = KernelSize::Fixed;
+    v.push_back({"pcf_grid_receiver_plane", s});
+    s.sampling.pattern = PcfPattern::Bilinear;
+    s.earlyOutMinMax = true;
+    v.push_back({"pcf_bilinear_receiver_plane_early_out", s});
+    s.light.type = LightType::Sun;
+    v.push_back({"pcf_bilinear_receiver_plane_sun", s});
+    FilterSpec p;
+    p.bias.kind = BiasKind::ReceiverPlane;
+    p.blocker.kind = BlockerKind::Search;
+    p.blocker.pattern = SamplePattern::Poisson;
+    p.sampling.pattern = PcfPattern::Poisson;
+    v.push_back({"pcss_poisson_receiver_plane", p});
+    p.blocker.pattern = SamplePattern::Grid;
+    v.push_back({"pcss_grid_search_receiver_plane", p});
+    FilterSpec q = vssmSpec();
+    q.bias.kind = BiasKind::ReceiverPlane;
+    q.contact.enabled = true;
+    q.earlyOutMinMax = true;
+    v.push_back({"vssm_fallback_contact_receiver_plane", q});
+  }
   return v;
 }
 
@@ -234,6 +259,15 @@ TEST(LookupCompileChecks, PcfOnlyHasNoMomentsOrSummedAreaTable) {
   EXPECT_NE(pre.find("shadowc_visibility"), std::string::npos);
   // Constants are folded: no SHADOWC_ macro names survive preprocessing.
   EXPECT_EQ(pre.find("shadowc_pcf_n"), std::string::npos);
+}
+
+TEST(LookupCompileChecks, ReceiverPlaneTapsOnlyWithThatBias) {
+  // The per-tap plane depth is in the receiver-plane variants only; the others keep one d.
+  for (const char* name :
+       {"pcf_grid_receiver_plane", "pcss_poisson_receiver_plane", "vssm_fallback_contact_receiver_plane"})
+    EXPECT_NE(preprocessed(find(name)).find("shadowc_tapDepth"), std::string::npos) << name;
+  for (const char* name : {"pcf_grid", "pcss_poisson", "vssm_paper_example"})
+    EXPECT_EQ(preprocessed(find(name)).find("shadowc_tapDepth"), std::string::npos) << name;
 }
 
 TEST(LookupCompileChecks, SiblingSatVariantDoesMentionTheTable) {

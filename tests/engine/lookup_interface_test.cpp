@@ -212,6 +212,40 @@ TEST(LookupInterface, TheShadePassKeepsItsOwnLayout) {
   }
 }
 
+// docs/integration.md: with `bias receiver_plane` a fragment shader passes the triangle's own
+// plane (screen-space derivatives) instead of the shading normal. Sibling: the same call in a
+// compute shader (the shade pass) does not compile, which is why the lookup takes a normal.
+TEST(LookupInterface, TheReceiverPlaneCanComeFromScreenSpaceDerivatives) {
+  driver::Options o;
+  o.lookup = {1, 0};
+  const driver::Result r = driver::compileSource(
+      "filter rp {\n  depth\n  kernel fixed(5)\n  bias receiver_plane(constant: 0.0005)\n}\n", "rp.shadow", o);
+  ASSERT_TRUE(r.ok) << r.log;
+  const std::string lookup = lookupOf(r);
+  ASSERT_NE(lookup.find("shadowc_tapDepth"), std::string::npos);
+  const std::string main = R"(
+void main() {
+  vec3 face = normalize(cross(dFdx(worldPos), dFdy(worldPos)));
+  face = dot(face, worldNormal) < 0.0 ? -face : face;
+  float v = shadowc_visibility(worldPos, face);
+  color = frame.viewProj * vec4(v);
+}
+)";
+  const SpirvResult s = compileFragment(kEngineHead + lookup + main);
+  ASSERT_TRUE(s.ok) << s.log;
+  EXPECT_EQ(validateSpirv(s.words), "");
+  const std::string computeHead = R"(#version 450
+layout(local_size_x = 8, local_size_y = 8) in;
+layout(set = 0, binding = 0, std140) uniform Frame { mat4 viewProj; mat4 lightView; vec4 light; } frame;
+vec3 worldPos = vec3(0.0);
+vec3 worldNormal = vec3(0.0, 1.0, 0.0);
+vec4 color;
+)";
+  const SpirvResult c = compileGlsl(computeHead + lookup + main, ShaderStage::Compute, "shade.comp", {}, {false, true});
+  EXPECT_FALSE(c.ok);
+  EXPECT_NE(c.log.find("dFdx"), std::string::npos) << c.log;
+}
+
 TEST(LookupInterface, APlacementOutOfRangeIsOneMessage) {
   const test::CliResult c = test::runShadowc("compile " + test::samplePath("pcf_grid5x5").string() + " -o " +
                                              test::freshTempDir("lookup-range").string() + " --lookup-set 99");

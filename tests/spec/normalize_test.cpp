@@ -253,3 +253,31 @@ TEST(Msm, Fp32SatPrecisionBothSidesOfTheBound) {
   EXPECT_EQ(p.boxTexels, 32 * 32);
   EXPECT_NEAR(p.meanError, 2.0 * std::ldexp(1.0, -24) * 4096.0 / 1024.0, 1e-15);
 }
+
+TEST(Combinations, ReceiverPlaneBias) {
+  // Issue 9 item 4: `bias receiver_plane(constant:, max_slope:)`, both optional.
+  const FilterSpec d = load("depth\nbias receiver_plane");
+  EXPECT_EQ(d.bias.kind, BiasKind::ReceiverPlane);
+  EXPECT_DOUBLE_EQ(d.bias.constant, 1e-3);
+  EXPECT_DOUBLE_EQ(d.bias.maxSlope, 50);
+  const FilterSpec s = load("depth\nbias receiver_plane(constant: 0.0005, max_slope: 4)");
+  EXPECT_DOUBLE_EQ(s.bias.constant, 5e-4);
+  EXPECT_DOUBLE_EQ(s.bias.maxSlope, 4);
+  EXPECT_EQ(specToJson(s)["bias"]["kind"], "receiver_plane");
+  EXPECT_EQ(specToJson(s)["bias"]["max_slope"], 4);
+  // Other policies' JSON (and so their manifests) have no max_slope.
+  EXPECT_FALSE(specToJson(load("depth\nbias slope(0.05)"))["bias"].contains("max_slope"));
+  const LoadResult round = loadFilterSource(printFilter(s), "t.shadow");
+  ASSERT_TRUE(round.spec.has_value()) << formatDiagnostics(round);
+  EXPECT_EQ(specToJson(*round.spec), specToJson(s));
+  // A slope clamp of 0 would drop the plane: out of range, like a negative one.
+  EXPECT_FALSE(codes("depth\nbias receiver_plane(max_slope: 0)").empty());
+  EXPECT_FALSE(codes("depth\nbias receiver_plane(max_slope: -1)").empty());
+  EXPECT_FALSE(codes("depth\nbias receiver_plane(0.001)").empty());  // no positional argument
+  // On moments only VSSM's fallback / contact PCF read depth taps; elsewhere it does nothing.
+  EXPECT_EQ(codes("moments linear\nkernel fixed(5)\nbias receiver_plane"), Codes{"W0505"});
+  const std::string vssm = "moments linear\nstorage sat(int32)\nblocker moments\nkernel quadtree(height: 2)\n";
+  EXPECT_EQ(codes(vssm + "bias receiver_plane"), Codes{});  // fallback pcf(2x2) by default
+  EXPECT_EQ(codes(vssm + "fallback none\nbias receiver_plane"), Codes{"W0505"});
+  EXPECT_EQ(codes(vssm + "fallback none\ncontact pcf(3x3)\nbias receiver_plane"), Codes{});
+}

@@ -482,7 +482,8 @@ std::vector<double> MomentsField::texel(int x, int y, int layer) const {
 }
 
 bool intentModels(const FilterSpec& s) {
-  if (s.contact.enabled || s.bias.kind == BiasKind::NormalOffset) return false;
+  if (s.contact.enabled || s.bias.kind == BiasKind::NormalOffset || s.bias.kind == BiasKind::ReceiverPlane)
+    return false;
   if (s.representation == Representation::Depth)
     return s.sampling.pattern == PcfPattern::Grid && s.blocker.kind == BlockerKind::None;
   if (s.prefilter.mips && s.storage.sat == SatKind::None) return false;

@@ -107,16 +107,16 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
-#line 12
+#line 17
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
   vec3 p = worldPos;
-#line 19
+#line 24
   vec3 pl =(shadowc_frame(). lightView * vec4(p, 1.0)). xyz;
   return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
 }
 
 float shadowc_bias(vec3 worldPos, vec3 worldNormal){
-#line 32
+#line 37
   return 0.001;
 
 }
@@ -224,18 +224,19 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 ls = shadowc_lightSpace(p . xyz);
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
+#line 65
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
   r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 85
+#line 88
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 96
+#line 105
   float v = shadowc_momentsTechnique(r);
-#line 106
+#line 115
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

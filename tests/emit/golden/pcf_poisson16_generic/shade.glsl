@@ -124,10 +124,10 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
-#line 12
+#line 17
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
   vec3 p = worldPos;
-#line 19
+#line 24
   vec3 pl =(shadowc_frame(). lightView * vec4(p, 1.0)). xyz;
   return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
 }
@@ -140,7 +140,7 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
   float len = length(nl)* length(pl);
   float ndotl = len > 0.0 ? clamp(dot(nl, - pl)/ len, 0.0, 1.0): 0.0;
   return max(shadowc_generic . biasSlope *(1.0 - ndotl), shadowc_generic . biasConstant);
-#line 34
+#line 39
 }
 #line 18 "lookup/shadowc_lookup.glsl"
 
@@ -170,20 +170,20 @@ vec2 shadowc_rotation(vec3 worldPos){
 vec2 shadowc_rotate(vec2 tap, vec2 rot){ return vec2(rot . x * tap . x - rot . y * tap . y, rot . y * tap . x + rot . x * tap . y);}
 #line 20 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcf.glsl"
-#line 12
+#line 13
 float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< d ? 0.0 : 1.0;}
-#line 49
+#line 50
 float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot){
   float lit = 0.0;
   for(int i = 0;i < shadowc_generic . pcfTaps;++ i)
     lit += shadowc_litTexel(ivec2(floor(c + shadowc_rotate(shadowc_generic . poissonPcf[i], rot)*(0.5 * w))), d);
   return lit / float(shadowc_generic . pcfTaps);
 }
-#line 59
+#line 60
 float shadowc_pcf(shadowc_Receiver r, float w){
-#line 64
+#line 65
   return shadowc_pcfPoisson(r . texel, w, r . d, shadowc_rotation(r . worldPos));
-#line 70
+#line 71
 }
 #line 23 "lookup/shadowc_lookup.glsl"
 #line 54
@@ -195,18 +195,19 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 ls = shadowc_lightSpace(p . xyz);
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
+#line 65
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
   r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 85
+#line 88
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 103
+#line 112
   float v = shadowc_pcf(r, shadowc_generic . kernelFixedTexels);
-#line 106
+#line 115
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#line 41
+#line 42
 const vec2 shadowc_poissonPcf[32]= vec2[](vec2(- 0.0841346765, - 0.637574607), vec2(- 0.298654647, 0.909686429), vec2(0.909073413, 0.268397074), vec2(- 0.847625263, 0.0325486921), vec2(0.780809036, - 0.603617518), vec2(0.0369577091, 0.164983138), vec2(0.453231299, 0.888497225), vec2(- 0.694310779, - 0.627848962), vec2(0.519970057, - 0.103337728), vec2(- 0.35179077, - 0.179725706), vec2(- 0.44169117, 0.388021544), vec2(0.307776472, - 0.913085568), vec2(0.429814712, 0.400962943), vec2(0.0520009757, 0.645435175), vec2(0.952093652, - 0.19628198), vec2(- 0.871295919, 0.461486305), vec2(0.113922792, - 0.252060138), vec2(- 0.404048443, - 0.910818834), vec2(0.720645251, 0.609744658), vec2(0.373048485, - 0.507597016), vec2(- 0.859507703, - 0.322146399), vec2(- 0.613262083, 0.720926204), vec2(- 0.0170520793, - 0.982231213), vec2(0.0273825855, 0.976643885), vec2(- 0.379473427, - 0.517019399), vec2(- 0.536449851, 0.0648677918), vec2(- 0.166350226, 0.462073235), vec2(- 0.252368084, 0.151256353), vec2(0.633120335, 0.203177418), vec2(0.554466486, - 0.773794902), vec2(0.704001422, - 0.342162973), vec2(0.331310386, 0.133089444));
 
 const vec2 shadowc_poissonBlocker[16]= vec2[](vec2(0.0958530825, - 0.595546058), vec2(0.33019398, 0.934204178), vec2(- 0.923934603, 0.307299889), vec2(0.870788861, 0.000214432748), vec2(- 0.752278945, - 0.583465332), vec2(- 0.134503773, 0.216850642), vec2(- 0.315759173, 0.852034183), vec2(0.648619334, - 0.711916121), vec2(0.416443818, 0.335460411), vec2(0.3979976, - 0.176631552), vec2(- 0.354441991, - 0.929124403), vec2(- 0.600433688, - 0.0948364334), vec2(0.812060969, 0.546462762), vec2(- 0.513792422, 0.45951067), vec2(- 0.255871891, - 0.344512652), vec2(0.0727314297, 0.577132379));
@@ -107,23 +107,50 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
-#line 12
+#line 17
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
   vec3 p = worldPos;
-#line 19
+
+  float z0 =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). z;
+  float texelWorld = 2.0 * max(z0, 0.0)* shadowc_frame(). lightParams . x / float(shadowc_mapSize(). x);
+  p += worldNormal *(2.0 * texelWorld);
+
   vec3 pl =(shadowc_frame(). lightView * vec4(p, 1.0)). xyz;
   return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
 }
 
 float shadowc_bias(vec3 worldPos, vec3 worldNormal){
+#line 37
+  return 0.001;
 
+}
+#line 42
+vec2 shadowc_rpGradient;
+vec2 shadowc_rpCentre;
+#line 51
+void shadowc_receiverPlaneBegin(vec3 worldPos, vec3 worldNormal, vec2 texel){
   vec3 pl =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
   vec3 nl = mat3(shadowc_frame(). lightView)* worldNormal;
+#line 58
+  vec3 ray = vec3(pl . xy / pl . z, 1.0);
+  float texelWorld = 2.0 * pl . z * shadowc_frame(). lightParams . x / float(shadowc_mapSize(). x);
 
-  float len = length(nl)* length(pl);
-  float ndotl = len > 0.0 ? clamp(dot(nl, - pl)/ len, 0.0, 1.0): 0.0;
-  return max(0.05 *(1.0 - ndotl), 0.002);
-#line 34
+  float den = dot(nl, ray);
+  float lim = max(length(nl . xy)/ 50.0, 1e-20);
+  den =(den < 0.0 ? - 1.0 : 1.0)* max(abs(den), lim);
+  float range = shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y;
+  shadowc_rpGradient = - nl . xy / den *(texelWorld / range);
+  shadowc_rpCentre = texel;
+}
+#line 71
+float shadowc_tapDepth(ivec2 t, float d){ return d + dot(shadowc_rpGradient, vec2(t)+ 0.5 - shadowc_rpCentre);}
+#line 76
+vec2 shadowc_receiverPlaneRange(ivec4 rect){
+  vec2 a = shadowc_rpGradient *(vec2(rect . xy)+ 0.5 - shadowc_rpCentre);
+  vec2 b = shadowc_rpGradient *(vec2(rect . zw)+ 0.5 - shadowc_rpCentre);
+  vec2 lo = min(a, b);
+  vec2 hi = max(a, b);
+  return vec2(lo . x + lo . y, hi . x + hi . y);
 }
 #line 18 "lookup/shadowc_lookup.glsl"
 
@@ -153,20 +180,20 @@ vec2 shadowc_rotation(vec3 worldPos){
 vec2 shadowc_rotate(vec2 tap, vec2 rot){ return vec2(rot . x * tap . x - rot . y * tap . y, rot . y * tap . x + rot . x * tap . y);}
 #line 20 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcf.glsl"
-#line 12
-float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< d ? 0.0 : 1.0;}
-#line 49
+#line 13
+float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< shadowc_tapDepth(t, d)? 0.0 : 1.0;}
+#line 50
 float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot){
   float lit = 0.0;
   for(int i = 0;i < 32;++ i)
     lit += shadowc_litTexel(ivec2(floor(c + shadowc_rotate(shadowc_poissonPcf[i], rot)*(0.5 * w))), d);
   return lit / float(32);
 }
-#line 59
+#line 60
 float shadowc_pcf(shadowc_Receiver r, float w){
-#line 64
+#line 65
   return shadowc_pcfPoisson(r . texel, w, r . d, shadowc_rotation(r . worldPos));
-#line 70
+#line 71
 }
 #line 23 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcss.glsl"
@@ -177,16 +204,17 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w){
 #line 20
   vec2 rot = shadowc_rotation(r . worldPos);
   for(int i = 0;i < 16;++ i){
-    float z = shadowc_depthAt(ivec2(floor(r . texel + shadowc_rotate(shadowc_poissonBlocker[i], rot)*(0.5 * w))));
-    if(z < r . d){
+    ivec2 t = ivec2(floor(r . texel + shadowc_rotate(shadowc_poissonBlocker[i], rot)*(0.5 * w)));
+    float z = shadowc_depthAt(t);
+    if(z < shadowc_tapDepth(t, r . d)){
       sum += z;
       count += 1.0;
     }
   }
-#line 40
+#line 42
   return count > 0.0 ? sum / count : - 1.0;
 }
-#line 44
+#line 46
 float shadowc_pcss(shadowc_Receiver r){
   float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r));
   if(zb < 0.0)return 1.0;
@@ -202,18 +230,21 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 ls = shadowc_lightSpace(p . xyz);
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
+
+  shadowc_receiverPlaneBegin(p . xyz, worldNormal, r . texel);
+
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
   r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 85
+#line 88
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 98
+#line 107
   float v = shadowc_pcss(r);
-#line 106
+#line 115
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -1,7 +1,7 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 #line 1 "passes/sat_common.glsl"
-#line 25
+#line 27
 uvec4 shadowc_satEncode(vec4 v){ return uvec4(roundEven(clamp(v, 0.0, 1.0)* 65536.0));}
 #line 11 "templates/passes/sat_columns.comp"
 

@@ -107,16 +107,16 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
-#line 12
+#line 17
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal){
   vec3 p = worldPos;
-#line 19
+#line 24
   vec3 pl =(shadowc_frame(). lightView * vec4(p, 1.0)). xyz;
   return vec4(p, pl . z > 0.0 ? 1.0 : 0.0);
 }
 
 float shadowc_bias(vec3 worldPos, vec3 worldNormal){
-#line 32
+#line 37
   return 0.001;
 
 }
@@ -139,11 +139,11 @@ vec2 shadowc_minMaxOfRect(ivec4 rect){
     }
   return mm;
 }
-#line 36
-float shadowc_earlyOut(ivec4 rect, float d){
+#line 38
+float shadowc_earlyOut(ivec4 rect, float dLo, float dHi){
   vec2 mm = shadowc_minMaxOfRect(rect);
-  if(mm . x >= d)return 1.0;
-  if(mm . y < d)return 0.0;
+  if(mm . x >= dHi)return 1.0;
+  if(mm . y < dLo)return 0.0;
   return - 1.0;
 }
 #line 29 "lookup/shadowc_lookup.glsl"
@@ -420,30 +420,35 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 ls = shadowc_lightSpace(p . xyz);
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
+#line 65
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
   r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 73
+#line 76
 ivec4 shadowc_influenceRect(shadowc_Receiver r){
 
   ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
-#line 79
+#line 82
   ivec2 last = shadowc_mapSize()- 1;
   const int grow = 1 + 0;
   return ivec4(max(rect . xy - grow, ivec2(0)), min(rect . zw + grow, last));
 }
-#line 85
+#line 88
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 90
-  float early = shadowc_earlyOut(shadowc_influenceRect(r), r . d);
+#line 93
+  ivec4 rect = shadowc_influenceRect(r);
+#line 97
+  vec2 span = vec2(r . d);
+
+  float early = shadowc_earlyOut(rect, span . x, span . y);
   if(early >= 0.0)return early;
-#line 94
+#line 103
   float v = shadowc_vssm(r);
-#line 106
+#line 115
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"
