@@ -70,6 +70,14 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
     const bool diskTaps = s.representation == Representation::Depth && s.sampling.pattern == PcfPattern::Poisson;
     defReal("SHADOWC_SUN_BOX_SCALE", diskTaps ? 1.0 : std::sqrt(3.0) / 2.0);
   }
+  // Cascades: tiles of one atlas (templates/lookup/cascades.glsl); defined only when cascaded.
+  check(s.cascades.count == 0 || (sun && !moments && !s.earlyOutMinMax),
+        "cascades serve a sun's depth filters without a min-max pyramid (light_rules.cpp)");
+  if (s.cascades.count > 0) {
+    defInt("SHADOWC_CASCADES", s.cascades.count);
+    defInt("SHADOWC_CASCADE_GRID", cascadeGrid(s.cascades.count));
+    defReal("SHADOWC_CASCADE_BLEND", s.cascades.blend);
+  }
   if (!s.light.sizeFromScene)
     defReal("SHADOWC_LIGHT_WIDTH", sun                                  ? sunPenumbraSlope(s.light.angleDegrees)
                                    : s.light.shape == LightShape::Point ? 0.0
