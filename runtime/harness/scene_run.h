@@ -14,6 +14,7 @@
 #include "runtime/harness/run_harness.h"
 #include "runtime/metrics/metrics.h"
 #include "runtime/raster/rasterizer.h"
+#include "runtime/scene/cascade_setup.h"
 #include "runtime/scene/frame_setup.h"
 #include "runtime/scene/scene.h"
 
@@ -29,6 +30,9 @@ struct SceneSettings {
   // false: rasterize only, no Embree trace (`shadowc analyze` reads the light depth map and the
   // G-buffer alone); PreparedScene::reference stays empty and runOnScene refuses the scene.
   bool traceReference = true;
+  // A cascaded sun filter's cascades (cascadeConfigFromSpec of its manifest): the light depth is
+  // then an atlas of cascades fitted to the camera; the reference does not depend on them.
+  CascadeConfig cascades;
 };
 
 // The scene side, computed once and reusable for many filters (a sweep runs every variant on it).

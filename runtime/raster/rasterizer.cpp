@@ -1,11 +1,11 @@
 #include "runtime/raster/rasterizer.h"
 
+#include <fmt/core.h>
+
 #include <cstring>
+#include <glm/gtc/type_ptr.hpp>
 #include <string>
 #include <vector>
-
-#include <fmt/core.h>
-#include <glm/gtc/type_ptr.hpp>
 
 #include "backend/spirv_backend.h"
 #include "runtime/raster/raster_shaders.h"
@@ -91,12 +91,14 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
   for (ImageFormat f : spec.colors) {
     const VkFormat vf = vkFormatOf(f);
     if (!(ctx.formatFeatures(vf) & VK_FORMAT_FEATURE_COLOR_ATTACHMENT_BIT))
-      throw VulkanError(fmt::format("rasterize: {} is not a color attachment format on {}", toString(f), ctx.deviceName()));
+      throw VulkanError(
+          fmt::format("rasterize: {} is not a color attachment format on {}", toString(f), ctx.deviceName()));
     targets.push_back(createImage(ctx, vf, spec.width, spec.height, 1, 1,
                                   VK_IMAGE_USAGE_COLOR_ATTACHMENT_BIT | VK_IMAGE_USAGE_TRANSFER_SRC_BIT));
     views.push_back(createView(ctx, targets.back(), VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1));
   }
-  Image depth = createImage(ctx, depthFormat, spec.width, spec.height, 1, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+  Image depth =
+      createImage(ctx, depthFormat, spec.width, spec.height, 1, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
   UniqueImageView depthView = createView(ctx, depth, VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1);
 
   const uint32_t n = uint32_t(spec.colors.size());
@@ -283,6 +285,24 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
   return out;
 }
 
+// A cascaded sun (runtime/scene/cascade_setup.h): each cascade rendered at its tile's size with its
+// own orthographic window, copied into tile (i mod G, i div G) of one atlas (texels outside every
+// tile keep "nothing hit"). Same light view, same linear depth range for every cascade.
+HostImage renderCascadeAtlas(VulkanContext& ctx, const Geometry& geometry, const FrameSetup& setup, PassSpec light) {
+  const uint32_t grid = uint32_t(setup.cascadeGrid), tile = setup.mapSize / grid;
+  HostImage atlas = HostImage::fromFloats(setup.mapSize, setup.mapSize, ImageFormat::R32F,
+                                          std::vector<float>(size_t(setup.mapSize) * setup.mapSize, 1.0f));
+  light.width = light.height = tile;
+  for (int i = 0; i < setup.cascadeCount; ++i) {
+    std::memcpy(light.push.viewProj, glm::value_ptr(setup.cascadeViewProj[size_t(i)]), sizeof light.push.viewProj);
+    const HostImage t = std::move(renderOffscreen(ctx, geometry, light).at(0));
+    const uint32_t x0 = uint32_t(i) % grid * tile, y0 = uint32_t(i) / grid * tile;
+    for (uint32_t y = 0; y < tile; ++y)
+      std::memcpy(atlas.bytes.data() + atlas.texelOffset(x0, y0 + y), t.bytes.data() + t.texelOffset(0, y), tile * 4);
+  }
+  return atlas;
+}
+
 }  // namespace
 
 RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup& setup) {
@@ -302,7 +322,8 @@ RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup
   for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = setup.lightView[c][2];  // row 2 of a column-major matrix
   light.push.depthRange[0] = setup.nearPlane;
   light.push.depthRange[1] = setup.farPlane;
-  out.lightDepth = std::move(renderOffscreen(ctx, geometry, light).at(0));
+  out.lightDepth = setup.cascadeCount > 0 ? renderCascadeAtlas(ctx, geometry, setup, light)
+                                          : std::move(renderOffscreen(ctx, geometry, light).at(0));
 
   PassSpec camera;
   camera.width = setup.width;
