@@ -125,6 +125,9 @@ TEST_F(CascadesTest, FourCascadesMatchOneMapOfTheSameTexelsWithNoVisibleBorder) 
              c.metrics.compared, splits[0], splits[1], splits[2], splits[3], splits[4]);
   fmt::print("  rmse: 4 cascades of 1024^2 {:.4f}; one 2048^2 map {:.4f} (ratio {:.2f}); one 1024^2 map {:.4f}\n",
              c.metrics.rmse, s.metrics.rmse, c.metrics.rmse / s.metrics.rmse, s1024.metrics.rmse);
+  for (int i = 0; i < 4; ++i)
+    fmt::print("  cascade {} texel {:.1f} cm; one 2048^2 map's {:.1f} cm\n", i,
+               100.0 * 2.0 * csc->setup.frame.cascades[i][2] / kAtlas, 100.0 * 2.0 * one.setup.halfExtent / kAtlas);
   EXPECT_EQ(c.metrics.nonFinite + c.metrics.outOfRange, 0u);
   EXPECT_LE(c.metrics.rmse, kRmseRatio * s.metrics.rmse);
   // Sibling (b): a quarter of the texels in one map is outside the bound.
