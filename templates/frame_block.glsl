@@ -18,8 +18,19 @@ layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_FRAME, std140) uniform shado
   vec4 lightShape;    // x 0 rect / 1 disk / 2 point, yzw unused
   vec4 mapInfo;       // x map size (texels), y 1/size, zw unused
   vec4 screenInfo;    // x width, y height, z 1/width, w 1/height
+#ifdef SHADOWC_CASCADES  // a cascaded sun (templates/lookup/cascades.glsl); other filters end above
+  vec4 cascadeInfo;    // x cascade count, y camera depth where cascade 0 starts, zw unused
+  vec4 cameraDepth;    // camera view depth of a world point p: dot(xyz, p) + w
+  vec4 cascades[8];    // per cascade: xy light-view offset and z halfExtent of its atlas frame, w far split
+#endif
 } shadowc_frameBlock;
 
 shadowc_Frame shadowc_frame() { return shadowc_Frame(shadowc_frameBlock.lightView, shadowc_frameBlock.lightParams); }
+#ifdef SHADOWC_CASCADES
+// The cascade fields, for frame_cascades.glsl (an engine with SHADOWC_FRAME_EXTERNAL defines these).
+vec4 shadowc_cascadeInfo() { return shadowc_frameBlock.cascadeInfo; }
+vec4 shadowc_cameraDepthRow() { return shadowc_frameBlock.cameraDepth; }
+vec4 shadowc_cascadeData(int i) { return shadowc_frameBlock.cascades[i]; }
+#endif
 
 #endif

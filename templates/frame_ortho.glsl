@@ -11,6 +11,9 @@
 //    against the perspective form (d_r - d_b) / d_b * lightWidth of a spot.
 #ifndef SHADOWC_FRAME_ORTHO_GLSL
 #define SHADOWC_FRAME_ORTHO_GLSL
+#ifdef SHADOWC_CASCADES  // every function below then reads the frame of the cascade being looked up
+#include "frame_cascades.glsl"
+#endif
 
 // World position -> (uv, normalized depth d, view z).
 vec4 shadowc_lightSpace(vec3 worldPos) {

@@ -102,7 +102,7 @@ FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, c
       std::find_if(m.passes.begin(), m.passes.end(), [](const Pass& p) { return p.name == "shade"; });
   if (shadePass == m.passes.end()) throw InternalError("the pass graph of '" + spec.name + "' has no pass named shade");
   LookupLayout layout;
-  if (!lookupLayout(*shadePass, options.lookup, layout, result.log)) return result;
+  if (!lookupLayout(*shadePass, options.lookup, layout, result.log, spec.cascades.count)) return result;
   std::string lookupText;
   // The includable lookup is the shade pass's code: the same values, the lookup entry template.
   if (!emitLookup(spec, shade->values, layout, lookupText, result.log)) return result;

@@ -33,7 +33,8 @@ const char* macroOf(const std::string& image) {
 
 }  // namespace
 
-bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, LookupLayout& out, std::string& log) {
+bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, LookupLayout& out, std::string& log,
+                  int cascades) {
   if (placement.set > kMaxLookupSet || placement.bindingBase > kMaxLookupBindingBase)
     throw std::invalid_argument(
         fmt::format("lookup placement out of range: set {} (at most {}), binding base {} (at most {})", placement.set,
@@ -48,8 +49,10 @@ bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, Looku
     out.defines += fmt::format("#define {} {}\n", macroOf(b.image), placed.binding);
   }
   // The block alone, preprocessed with the same placement so that its numbers are literals.
+  // A cascaded sun's block has the cascade fields at its end (frame_block.glsl).
+  const std::string cascadeDefine = cascades > 0 ? fmt::format("#define SHADOWC_CASCADES {}\n", cascades) : "";
   const std::string wrapper = "#version 460\n#extension GL_GOOGLE_include_directive : require\n" + out.defines +
-                              "#include \"frame_block.glsl\"\n";
+                              cascadeDefine + "#include \"frame_block.glsl\"\n";
   std::string text;
   const SpirvResult pp =
       preprocessGlsl(wrapper, ShaderStage::Compute, "templates/frame_block.glsl", templateIncludes(), text);

@@ -33,6 +33,8 @@ struct LookupLayout {
 // From the shade pass's bindings: the frame and the shadow-map images (not the G-buffer or the
 // visibility output). Throws std::invalid_argument on an image the lookup has no macro for or a
 // placement out of range; returns false with the preprocessor's message in `log`.
-bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, LookupLayout& out, std::string& log);
+// `cascades` > 0: the block carries a cascaded sun's fields (frame_block.glsl).
+bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, LookupLayout& out, std::string& log,
+                  int cascades = 0);
 
 }  // namespace shadowc

@@ -81,6 +81,14 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
     // of the band for a blur prefilter's radius: w <= 1.5 g = 0.25, or g / 3 = 1/18 with mips.
     defReal("SHADOWC_CUBE_KERNEL_MAX", s.prefilter.mips ? 1.0 / 18.0 : 0.25);
   }
+  // Cascades: tiles of one atlas (templates/lookup/cascades.glsl); defined only when cascaded.
+  check(s.cascades.count == 0 || (sun && !moments && !s.earlyOutMinMax),
+        "cascades serve a sun's depth filters without a min-max pyramid (light_rules.cpp)");
+  if (s.cascades.count > 0) {
+    defInt("SHADOWC_CASCADES", s.cascades.count);
+    defInt("SHADOWC_CASCADE_GRID", cascadeGrid(s.cascades.count));
+    defReal("SHADOWC_CASCADE_BLEND", s.cascades.blend);
+  }
   if (!s.light.sizeFromScene && cube)
     defReal("SHADOWC_LIGHT_WIDTH", 2.0 * s.light.size);  // the sphere's diameter
   else if (!s.light.sizeFromScene)

@@ -137,6 +137,24 @@ const char* name(BiasKind v) {
 }
 }  // namespace
 
+const char* name(CascadeSplit v) {
+  switch (v) {
+    case CascadeSplit::Uniform:
+      return "uniform";
+    case CascadeSplit::Log:
+      return "log";
+    case CascadeSplit::Practical:
+      return "practical";
+  }
+  return "?";
+}
+
+int cascadeGrid(int count) {
+  int g = 1;
+  while (g * g < count) ++g;
+  return g;
+}
+
 double sunPenumbraSlope(double angleDegrees) { return 2.0 * std::tan(0.5 * angleDegrees * M_PI / 180.0); }
 
 nlohmann::ordered_json specToJson(const FilterSpec& s) {
@@ -197,6 +215,13 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
   j["contact"] = J{{"enabled", s.contact.enabled}, {"n", s.contact.n}, {"epsilon", s.contact.epsilon}};
   j["early_out_minmax"] = s.earlyOutMinMax;
   j["map_size"] = s.mapSize;
+  // Written only when cascaded, so every other manifest stays byte-identical.
+  if (s.cascades.count > 0)
+    j["cascades"] = J{{"count", s.cascades.count},
+                      {"split", name(s.cascades.split)},
+                      {"lambda", s.cascades.lambda},
+                      {"blend", s.cascades.blend},
+                      {"grid", cascadeGrid(s.cascades.count)}};
   return j;
 }
 

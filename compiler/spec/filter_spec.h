@@ -38,6 +38,26 @@ struct LightSpec {
 // width of the sun's cone of directions one unit behind a blocker.
 double sunPenumbraSlope(double angleDegrees);
 
+// ---- cascades (issue 14 item 3) -------------------------------------------------------------
+// Cascaded shadow maps for a sun (docs/dsl.md "cascades"): the camera frustum is cut into `count`
+// depth slices, each shadowed by its own orthographic map, the maps packed as tiles of one atlas.
+// Split i of n (camera depths near..far) is placed by:
+//  Uniform:     near + (far - near) i / n
+//  Log:         near (far / near)^(i / n)
+//  Practical:   lambda * Log + (1 - lambda) * Uniform (Zhang et al. 2006's practical split scheme)
+// `blend` is the band, as a fraction of a cascade's depth range, before its far split where the
+// lookup mixes it with the next cascade. count 0 = no cascades (one map fitted to the scene).
+enum class CascadeSplit { Uniform, Log, Practical };
+const char* name(CascadeSplit v);
+struct CascadeSpec {
+  int count = 0;  // 0: not cascaded; else 1..8
+  CascadeSplit split = CascadeSplit::Practical;
+  double lambda = 0.5;  // Practical only
+  double blend = 0.1;   // [0, 0.5]
+};
+// Tiles per side of the atlas holding `count` cascades (1, 2x2 for 2..4, 3x3 for 5..8).
+int cascadeGrid(int count);
+
 // ---- representation ----------------------------------------------------------------------
 // What the prefilter passes store per shadow-map texel.
 enum class Representation {
@@ -180,6 +200,7 @@ struct FilterSpec {
   FallbackSpec fallback;
   ContactSpec contact;
   bool earlyOutMinMax = false;  // min-max hierarchical shadow map (vssm sec. 6.1)
+  CascadeSpec cascades;         // a sun only (checker, light_rules.cpp)
   // Largest shadow-map side (texels) the precision checks assume: SAT sums of W^2 texels
   // lower the EVSM exponent limit by ln(W^2)/2 (FACTS.md "Precision"). The runtime must not
   // run the filter on a larger map. Setting `map_size`.

@@ -36,6 +36,21 @@ std::optional<CubeRefusal> cubeRefusal(const FilterSpec& s) {
   return std::nullopt;
 }
 
+// Why cascades cannot serve this technique yet, or nullopt. The cascades are tiles of one atlas
+// (templates/lookup/cascades.glsl): every depth texel the lookup fetches is clamped to its
+// cascade's tile, which is exact for the depth representation (PCF, PCSS). The prefilters of the
+// other techniques (blur, mips, SAT, min-max pyramid) run over the whole atlas and their kernel
+// rectangles are clamped to the map, not to a tile; until they are, they are refused.
+std::optional<const char*> cascadeRefusal(const FilterSpec& s) {
+  if (s.representation == Representation::Moments)
+    return "with moments the blur / mip / summed-area prefilters run over the whole cascade atlas and their boxes "
+           "would mix neighbouring cascades' tiles; cascades serve 'depth' filters (PCF, PCSS)";
+  if (s.earlyOutMinMax)
+    return "the min-max pyramid's coarse levels span several cascades' tiles; cascades serve 'depth' filters "
+           "without 'early_out minmax'";
+  return std::nullopt;
+}
+
 }  // namespace
 
 void checkLightRules(const FilterSpec& spec, const SettingsRead& given, dsl::DiagnosticSink& sink) {
@@ -48,12 +63,12 @@ void checkLightRules(const FilterSpec& spec, const SettingsRead& given, dsl::Dia
       reportAt(sink, *given.light, DiagId::pointLightNotImplemented,
                spec.blocker.kind != BlockerKind::None ? "a blocker estimate" : "a penumbra kernel");
   }
-  if (given.cascades) {
-    const char* why = spec.light.type == LightType::Sun
-                          ? "a sun uses one orthographic map fitted to the scene's bounds"
-                          : "cascades split a sun's orthographic map along the camera frustum, and this filter has no "
-                            "'light sun(...)'";
-    reportAt(sink, *given.cascades, DiagId::cascadesNotImplemented, why);
+  if (given.cascades && spec.cascades.count > 0) {
+    if (spec.light.type != LightType::Sun)
+      reportAt(sink, *given.cascades, DiagId::cascadesNeedSun,
+               spec.light.type == LightType::Point ? "an omnidirectional point light" : "a spot light");
+    else if (auto why = cascadeRefusal(spec))
+      reportAt(sink, *given.cascades, DiagId::cascadesNotImplemented, *why);
   }
 }
 

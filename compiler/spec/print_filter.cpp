@@ -205,6 +205,13 @@ std::string printFilter(const FilterSpec& s) {
                                      ? call("reduce", {"amount: " + num(s.moments.bleedingReduction)})
                                      : "none");
   lines.emplace_back("map_size", std::to_string(s.mapSize));
+  if (s.cascades.count > 0) {
+    const CascadeSpec& c = s.cascades;
+    std::vector<std::string> args = {"count: " + std::to_string(c.count)};
+    if (c.split == CascadeSplit::Practical) args.push_back("lambda: " + num(c.lambda));
+    args.push_back("blend: " + num(c.blend));
+    lines.emplace_back("cascades", call(name(c.split), args));
+  }
 
   std::string out = fmt::format("filter {} {{\n", s.name);
   for (const auto& [keyword, value] : lines)

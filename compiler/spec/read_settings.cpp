@@ -158,8 +158,46 @@ class SettingsReader : ValueReader {
     }
   }
 
-  // `cascades`: read so that the checker can say it is not implemented (light_rules.cpp).
-  void readCascades(const Setting& s) { out_.cascades = &s; }
+  // `cascades N` (practical split, lambda 0.5, blend 0.1) or `cascades SCHEME(count: N, ...)` with
+  // SCHEME uniform / log / practical (docs/dsl.md "cascades"). 8 is the most an engine uses
+  // (Unreal's limit is 16 but its default 4); more tiles than a 3x3 atlas would not fit it.
+  void readCascades(const Setting& s) {
+    out_.cascades = &s;
+    const Value& v = s.value;
+    const std::string what = "'cascades'";
+    const char* countRange = "in [1, 8] (one orthographic map per camera-depth slice, tiles of one atlas)";
+    CascadeSpec c;
+    if (v.kind == Value::Kind::Number) {
+      if (auto n = integer(&v, what, 1, 8, countRange)) c.count = *n;
+      out_.spec.cascades = c;
+      return;
+    }
+    auto idx = variant(v, what, {"uniform", "log", "practical"});
+    if (!idx) return;
+    const CascadeSplit schemes[] = {CascadeSplit::Uniform, CascadeSplit::Log, CascadeSplit::Practical};
+    c.split = schemes[*idx];
+    std::vector<Param> params = {{"count", true}};
+    if (c.split == CascadeSplit::Practical) params.push_back({"lambda", false});
+    params.push_back({"blend", false});
+    Bound b;
+    if (!bind(v, params, b)) return;
+    const Value* count = get(b, "count");
+    if (!count) {
+      at(v, DiagId::missingArgument, v.text, "count (1..8)");
+      return;
+    }
+    auto n = integer(count, arg("count", v), 1, 8, countRange);
+    if (!n) return;
+    c.count = *n;
+    if (const Value* x = get(b, "lambda")) {
+      if (auto l = number(x, arg("lambda", v), Range{0, 1})) c.lambda = *l;
+    }
+    // Past half a cascade the band of one border would reach the previous one.
+    if (const Value* x = get(b, "blend")) {
+      if (auto l = number(x, arg("blend", v), Range{0, 0.5})) c.blend = *l;
+    }
+    out_.spec.cascades = c;
+  }
 
   void readDepth(const Setting& s) {
     out_.representation = &s;

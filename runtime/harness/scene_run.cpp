@@ -23,6 +23,7 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
   p->settings = settings;
   p->scene = std::move(scene);
   p->setup = setupFrame(p->scene, settings.map, settings.screen, settings.screen, settings.cubeTanHalf);
+  setupCascades(p->scene, settings.cascades, p->setup);
   p->raster = rasterize(ctx, p->scene, p->setup);
   const std::vector<float> positions = p->raster.gbufferPosition.floats();
   p->mask = geometryMask(positions);
@@ -66,6 +67,11 @@ SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, cons
         sceneType == "sun"     ? "sun"
         : sceneType == "point" ? "point(radius: scene)"
                                : "area(size: scene)"));
+  if (cascadeConfigFromSpec(spec) != scene.settings.cascades)
+    throw std::invalid_argument(fmt::format(
+        "filter '{}' has {} cascades but scene '{}' was prepared with {}: prepare it with the manifest's cascades "
+        "(SceneSettings::cascades = cascadeConfigFromSpec(manifest.spec))",
+        passes.manifest.filter, cascadeConfigFromSpec(spec).count, scene.scene.name, scene.settings.cascades.count));
   RunInputs inputs;
   inputs.frame = scene.setup.frame;
   inputs.mapSize = scene.setup.mapSize;

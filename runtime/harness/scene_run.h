@@ -14,6 +14,7 @@
 #include "runtime/harness/run_harness.h"
 #include "runtime/metrics/metrics.h"
 #include "runtime/raster/rasterizer.h"
+#include "runtime/scene/cascade_setup.h"
 #include "runtime/scene/frame_setup.h"
 #include "runtime/scene/scene.h"
 
@@ -32,6 +33,9 @@ struct SceneSettings {
   // A point light's face half-fov tangent (cube_setup.h): 1.5 gives the guard band the lookup's
   // kernels need at face seams; 1 (no band) only for the seam test's failing sibling.
   float cubeTanHalf = kCubeTanHalf;
+  // A cascaded sun filter's cascades (cascadeConfigFromSpec of its manifest): the light depth is
+  // then an atlas of cascades fitted to the camera; the reference does not depend on them.
+  CascadeConfig cascades;
 };
 
 // The scene side, computed once and reusable for many filters (a sweep runs every variant on it).

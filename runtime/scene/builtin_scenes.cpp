@@ -230,6 +230,28 @@ const std::map<std::string, ordered_json>& builtins() {
                box("seam_crate", v3(0.8, 0.5, 0.5), transform(v3(-0.3, 0.25, -1.5), v3(0, 20, 0))),
                sphere("corner_sphere", 0.3, transform(v3(-1.4, 0.55, 1.3))),
                box("pillar", v3(0.2, 1.0, 0.2), transform(v3(0.9, 0.5, 1.6)))});
+    // Cascades (issue 14 item 3): a camera 6 m up looking along a 160 m street, casters from 5 m to
+    // 150 m away, so one map fitted to the scene spends most texels where the camera sees little.
+    // Three posts stand just before the three splits of `cascades 4` (practical, lambda 0.5, at
+    // camera depths 24.3, 50.9 and 89.9 m for this camera) so that their shadows cross each
+    // cascade border. A 1.5-degree sun (3x the real one) keeps the penumbrae a few texels wide
+    // even in the far cascades; a 2 m fence along the whole left side lays one straight penumbra
+    // along the street, across every border (tests/gpu/cascades_test.cpp, docs/accuracy.md "Cascaded sun").
+    t["sun_outdoor_long"] = scene(
+        "sun_outdoor_long",
+        "A 1.5-degree sun over a 12 m x 160 m street seen from 6 m up along its length: posts, walls and boxes "
+        "from 5 m to 150 m away, the case cascaded shadow maps are for.",
+        camera(v3(0, 6, 8), v3(0, 0, -40), 45), sun(ordered_json(v3(0.45, -0.75, -0.35)), 1.5),
+        {plane("street", 12, 160, transform(v3(0, 0, -72))), box("post_1", v3(0.2, 3, 0.2), transform(v3(-2, 1.5, 2))),
+         box("wall_1", v3(3, 1.5, 0.3), transform(v3(2, 0.75, -4))),
+         box("box_1", v3(1.5, 2, 1.5), transform(v3(-3, 1, -9))),
+         box("post_2", v3(0.3, 5, 0.3), transform(v3(-1, 2.5, -14.2))),
+         box("wall_2", v3(5, 2.5, 0.4), transform(v3(4, 1.25, -28))),
+         box("post_3", v3(0.4, 7, 0.4), transform(v3(-4, 3.5, -40.6))),
+         box("box_2", v3(3, 4, 3), transform(v3(3, 2, -60))),
+         box("post_4", v3(0.6, 10, 0.6), transform(v3(-3, 5, -79.9))),
+         box("wall_3", v3(8, 4, 0.6), transform(v3(1, 2, -110))), box("box_3", v3(5, 6, 5), transform(v3(-2, 3, -140))),
+         box("fence", v3(0.2, 2, 150), transform(v3(-5.5, 1, -71)))});
     return t;
   }();
   return table;

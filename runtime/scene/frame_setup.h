@@ -32,6 +32,11 @@ struct FrameSetup {
   glm::mat4 cameraView{1};  // world -> camera view (right-handed, looking down -z)
   glm::mat4 cameraProj{1};  // Vulkan clip: y flipped (row 0 = top of the image), depth 0..1
   float cameraNear = 0.1f, cameraFar = 100;
+  // A cascaded sun (cascade_setup.h; 0 = one map): cascade i is rendered with cascadeViewProj[i]
+  // into tile (i mod cascadeGrid, i div cascadeGrid) of the map, an atlas of mapSize^2 texels.
+  int cascadeCount = 0, cascadeGrid = 1;
+  std::array<glm::mat4, kMaxCascades> cascadeViewProj{};
+  std::array<float, kMaxCascades + 1> cascadeSplits{};  // camera depths, cascadeCount + 1 of them
 };
 
 // The light's orthonormal frame: z = light.direction, y = light.up made orthogonal to z,

@@ -73,4 +73,7 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker) {
 // Map a value to [0, 1]; NaN becomes 0 (shadowed) rather than propagating.
 float shadowc_unit(float v) { return (v >= 0.0) ? min(v, 1.0) : 0.0; }
 
+#ifdef SHADOWC_CASCADES
+#include "lookup/cascade_tile.glsl"
+#endif
 #endif

@@ -115,4 +115,7 @@ float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
   return SHADOWC_NAIVE_SANITIZE(v);
 }
 
+#ifdef SHADOWC_CASCADES
+#include "lookup/cascades.glsl"
+#endif
 #endif

@@ -16,6 +16,7 @@ layout(set = 0, binding = 0, std140)uniform shadowc_FrameBlock {
   vec4 lightShape;
   vec4 mapInfo;
   vec4 screenInfo;
+#line 26
 } shadowc_frameBlock;
 
 shadowc_Frame shadowc_frame(){ return shadowc_Frame(shadowc_frameBlock . lightView, shadowc_frameBlock . lightParams);}
