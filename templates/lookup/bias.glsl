@@ -54,6 +54,18 @@ void shadowc_receiverPlaneBegin(vec3 worldPos, vec3 worldNormal, vec2 texel) {
 #ifdef SHADOWC_LIGHT_ORTHO
   vec3 ray = vec3(0.0, 0.0, 1.0);
   float texelWorld = 2.0 * shadowc_frame().lightParams.x / float(shadowc_mapSize().x);
+#elif defined(SHADOWC_LIGHT_CUBE)
+  // A point light: the plane in the receiver's cube face (frame_cube.glsl picks the face by the
+  // major axis a of pl, face coordinates (p[a+1], p[a+2], s p[a])), a texel of its atlas cell
+  // (N = mapSize / 3 texels per face) 2 z tanHalf / N wide. Taps in the cell's guard band are
+  // the same face's projection, so the one plane serves them too.
+  vec3 q = abs(pl);
+  int a = (q.x >= q.y && q.x >= q.z) ? 0 : (q.y >= q.z ? 1 : 2);
+  float sgn = pl[a] < 0.0 ? -1.0 : 1.0;
+  pl = vec3(pl[(a + 1) % 3], pl[(a + 2) % 3], max(sgn * pl[a], 1e-20));
+  nl = vec3(nl[(a + 1) % 3], nl[(a + 2) % 3], sgn * nl[a]);
+  vec3 ray = vec3(pl.xy / pl.z, 1.0);
+  float texelWorld = 2.0 * pl.z * shadowc_frame().lightParams.x / float(shadowc_mapSize().x / 3);
 #else
   vec3 ray = vec3(pl.xy / pl.z, 1.0);  // pl.z > 0: shadowc_receiver returned before otherwise
   float texelWorld = 2.0 * pl.z * shadowc_frame().lightParams.x / float(shadowc_mapSize().x);
@@ -118,7 +130,7 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal) {
 #undef shadowc_biasedLightPosition
 vec4 shadowc_biasedLightPosition(vec3 worldPos, vec3 worldNormal) {
   vec3 p = worldPos;
-#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_NORMAL_OFFSET_KIND
+#if SHADOWC_BIAS_KIND == SHADOWC_BIAS_NORMAL_OFFSET_KIND || SHADOWC_BIAS_KIND == SHADOWC_BIAS_RECEIVER_PLANE_KIND
   float zf = shadowc_lightSpace(worldPos).w;
   float texelWorld = 2.0 * zf * shadowc_frame().lightParams.x / float(shadowc_mapSize().x / 3);
   p += worldNormal * (SHADOWC_NORMAL_OFFSET * texelWorld);

@@ -26,11 +26,14 @@ struct PointCase {
   double bound;  // RMSE over geometry pixels (measured, docs/accuracy.md "Point lights")
 };
 // Measured (lavapipe, map 1536, screen 256, 16^2 reference samples): see docs/accuracy.md.
-// Measured 0.0982 / 0.0946 / 0.0805; most of it is the samples' bias, not the cube map: slope(0.05)
-// of a 4.4 m depth range lets light through the 0.2-0.4 m casters' back faces (docs/accuracy.md).
+// Measured 0.0982 / 0.0543 / 0.0805. pcf_poisson16 and the VSM sample: most of it is their bias,
+// not the cube map: slope(0.05) of a 4.4 m depth range lets light through the 0.2-0.4 m casters'
+// back faces (docs/accuracy.md). pcss_poisson's receiver-plane bias (the gradient taken in the
+// receiver's cube face, bias.glsl) has no such slab: 0.0946 with the slope bias, and 0.226 while
+// the gradient was taken in the spot's single frame (the face's axes are not the light view's).
 constexpr PointCase kCases[] = {
     {"pcf_poisson16", 0.11},
-    {"pcss_poisson", 0.11},
+    {"pcss_poisson", 0.07},
     {"vsm_blur_mips_bleeding", 0.095},
 };
 
