@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "backend/spirv_backend.h"
 #include "driver/driver.h"
 #include "support/test_support.h"
 
@@ -61,6 +62,18 @@ inline std::vector<uint32_t> spirvWords(const std::string& bytes) {
     for (int b = 0; b < 4; ++b)
       words[i] |= static_cast<uint32_t>(static_cast<unsigned char>(bytes[4 * i + b])) << (8 * b);
   return words;
+}
+
+// Every .spv file of the artifact passes spirv-val (a failure per module, named `label/file`);
+// returns how many modules there were.
+inline int expectEverySpirvValid(const driver::Artifact& a, const std::string& label) {
+  int modules = 0;
+  for (const auto& f : a.files)
+    if (f.name.ends_with(".spv")) {
+      EXPECT_EQ(validateSpirv(spirvWords(f.bytes)), "") << label << "/" << f.name;
+      ++modules;
+    }
+  return modules;
 }
 
 }  // namespace shadowc::test

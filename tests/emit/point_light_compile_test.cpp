@@ -37,13 +37,7 @@ TEST_P(PointSample, CompilesWithCubeAtlasOrIsRefusedForItsSeams) {
   }
   ASSERT_TRUE(r.ok) << GetParam() << ":\n" << r.log;
   EXPECT_EQ(r.artifact->spec.light.type, LightType::Point);
-  int spv = 0;
-  for (const auto& f : r.artifact->files)
-    if (f.name.ends_with(".spv")) {
-      EXPECT_EQ(validateSpirv(test::spirvWords(f.bytes)), "") << GetParam() << "/" << f.name;
-      ++spv;
-    }
-  EXPECT_GE(spv, 1);
+  EXPECT_GE(test::expectEverySpirvValid(*r.artifact, GetParam()), 1);
   const std::string* shade = r.artifact->file("shade.glsl");
   ASSERT_NE(shade, nullptr);
   EXPECT_NE(shade->find(kCubeMarker), std::string::npos) << "the point light's shade pass lacks frame_cube.glsl";

@@ -132,7 +132,7 @@ vec2 shadowc_rpCentre;
 void shadowc_receiverPlaneBegin(vec3 worldPos, vec3 worldNormal, vec2 texel){
   vec3 pl =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
   vec3 nl = mat3(shadowc_frame(). lightView)* worldNormal;
-#line 58
+#line 70
   vec3 ray = vec3(pl . xy / pl . z, 1.0);
   float texelWorld = 2.0 * pl . z * shadowc_frame(). lightParams . x / float(shadowc_mapSize(). x);
 
@@ -143,9 +143,9 @@ void shadowc_receiverPlaneBegin(vec3 worldPos, vec3 worldNormal, vec2 texel){
   shadowc_rpGradient = - nl . xy / den *(texelWorld / range);
   shadowc_rpCentre = texel;
 }
-#line 71
+#line 83
 float shadowc_tapDepth(ivec2 t, float d){ return d + dot(shadowc_rpGradient, vec2(t)+ 0.5 - shadowc_rpCentre);}
-#line 76
+#line 88
 vec2 shadowc_receiverPlaneRange(ivec4 rect){
   vec2 a = shadowc_rpGradient *(vec2(rect . xy)+ 0.5 - shadowc_rpCentre);
   vec2 b = shadowc_rpGradient *(vec2(rect . zw)+ 0.5 - shadowc_rpCentre);
