@@ -97,6 +97,18 @@ TEST(ValidateErrors, SiblingACompiledManifestRunsToo) {
 
 // Light types (issue 14): a spot filter on a sun scene is one clear error naming the fix, and the
 // same filter compiled for a sun validates on it (the sibling).
+// `validate FILE --scene SCENE` succeeds: exit 0, an RMSE printed, no error line.
+void expectValidates(const std::filesystem::path& file, const std::string& scene) {
+  const test::CliResult r = test::runShadowc("validate " + file.string() + " --scene " + scene + kSmall);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rmse"), std::string::npos) << r.out;
+  EXPECT_EQ(errorLines(r.err), 0) << r.err;
+}
+
+// A 5x5 PCF for a point light (the spot and sun filters of these tests differ only in `light`).
+const std::string kPcfPointFilter =
+    "filter pcf_point {\n    light point(radius: scene)\n    depth\n    kernel fixed(5)\n    sampling grid(5x5)\n}\n";
+
 TEST(ValidateErrors, SpotFilterOnSunScene) {
   expectOneError(test::runShadowc("validate " + kFilter + " --scene sun_two_planes" + kSmall),
                  "compile the filter with 'light sun'");
@@ -106,10 +118,7 @@ TEST(ValidateErrors, SiblingASunFilterValidatesOnASunScene) {
   const auto file = writeTemp("sun-filter", "pcf_sun.shadow",
                               "filter pcf_sun {\n    light sun\n    depth\n    kernel fixed(5)\n"
                               "    sampling grid(5x5)\n}\n");
-  const test::CliResult r = test::runShadowc("validate " + file.string() + " --scene sun_two_planes" + kSmall);
-  EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("rmse"), std::string::npos) << r.out;
-  EXPECT_EQ(errorLines(r.err), 0) << r.err;
+  expectValidates(file, "sun_two_planes");
 }
 
 // Point lights (issue 14 item 4): a spot filter on point_room is one error naming the fix; a
@@ -120,21 +129,14 @@ TEST(ValidateErrors, SpotFilterOnPointScene) {
 }
 
 TEST(ValidateErrors, PointFilterOnSpotScene) {
-  const auto file = writeTemp("point-filter-spot", "pcf_point.shadow",
-                              "filter pcf_point {\n    light point(radius: scene)\n    depth\n    kernel fixed(5)\n"
-                              "    sampling grid(5x5)\n}\n");
+  const auto file = writeTemp("point-filter-spot", "pcf_point.shadow", kPcfPointFilter);
   expectOneError(test::runShadowc("validate " + file.string() + " --scene two_planes" + kSmall),
                  "is for a point light but scene 'two_planes' has a spot light");
 }
 
 TEST(ValidateErrors, SiblingAPointFilterValidatesOnAPointScene) {
-  const auto file = writeTemp("point-filter", "pcf_point.shadow",
-                              "filter pcf_point {\n    light point(radius: scene)\n    depth\n    kernel fixed(5)\n"
-                              "    sampling grid(5x5)\n}\n");
-  const test::CliResult r = test::runShadowc("validate " + file.string() + " --scene point_room" + kSmall);
-  EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("rmse"), std::string::npos) << r.out;
-  EXPECT_EQ(errorLines(r.err), 0) << r.err;
+  const auto file = writeTemp("point-filter", "pcf_point.shadow", kPcfPointFilter);
+  expectValidates(file, "point_room");
 }
 
 }  // namespace

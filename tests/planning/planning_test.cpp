@@ -79,12 +79,18 @@ bool spirvHoldsFloat(const driver::Artifact& a, float value) {
   return false;
 }
 
-TEST(Analysis, TwoPlanesPenumbraMatchesTheClosedForm) {
+// A scene rasterized for analysis only (no Embree trace) at the test's sizes.
+rt::SceneSettings analysisSettings(const std::string& scene) {
   rt::SceneSettings s;
-  s.scene = "two_planes";
+  s.scene = scene;
   s.screen = kScreen;
   s.map = kMap;
   s.traceReference = false;
+  return s;
+}
+
+TEST(Analysis, TwoPlanesPenumbraMatchesTheClosedForm) {
+  const rt::SceneSettings s = analysisSettings("two_planes");
   const auto prepared = rt::prepareScene(context(), s);
   EXPECT_TRUE(prepared->reference.empty());  // analysis needs no reference
   const planning::SceneStats st = planning::analyzeScene(*prepared);
@@ -110,11 +116,7 @@ TEST(Analysis, TwoPlanesPenumbraMatchesTheClosedForm) {
 // over a texel of 2 halfExtent / map. The perspective formula read this scene's halfExtent as a
 // tan(fov / 2) and gave widths off by orders of magnitude.
 TEST(Analysis, SunPenumbraTakesTheOrthographicForm) {
-  rt::SceneSettings s;
-  s.scene = "sun_two_planes";
-  s.screen = kScreen;
-  s.map = kMap;
-  s.traceReference = false;
+  const rt::SceneSettings s = analysisSettings("sun_two_planes");
   const auto prepared = rt::prepareScene(context(), s);
   ASSERT_TRUE(prepared->setup.orthographic);
   const planning::SceneStats st = planning::analyzeScene(*prepared);
@@ -139,11 +141,7 @@ TEST(Analysis, SunPenumbraTakesTheOrthographicForm) {
 }
 
 TEST(Analysis, ContactSceneHasContactAndSeveralDepths) {
-  rt::SceneSettings s;
-  s.scene = "contact";
-  s.screen = kScreen;
-  s.map = kMap;
-  s.traceReference = false;
+  const rt::SceneSettings s = analysisSettings("contact");
   const planning::SceneStats st = planning::analyzeScene(*rt::prepareScene(context(), s));
   EXPECT_GT(st.contactFraction(), 0.001);
   EXPECT_GT(st.multiDepthFraction(), 0.0);
