@@ -184,6 +184,9 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
     rt::VulkanContext ctx(rt::VulkanOptions{o.device, o.validation});
     Progress progress(log, pending.size(), o.tty);
     std::shared_ptr<const rt::PreparedScene> prepared;
+    // The case's scene per cascade configuration its variants ask for (a cascaded sun filter's
+    // atlas, rt::prepareSceneWithCascades; the reference is traced once per case).
+    std::vector<std::shared_ptr<const rt::PreparedScene>> withCascades;
     size_t preparedCase = SIZE_MAX;
     for (const Job& job : pending) {
       const Variant& v = e.variants[job.variant];
@@ -209,13 +212,21 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         if (!prepared->referenceCacheWarning.empty()) progress.note("warning: " + prepared->referenceCacheWarning);
         rt::writeVisibilityPng(o.outDir / refImage, prepared->reference, c.screen, c.screen);
         preparedCase = c.index;
+        withCascades = {prepared};
       }
       Row row;
       try {
+        const rt::CascadeConfig cascades = rt::cascadeConfigFromSpec(comp.passes->manifest.spec);
+        auto scene = std::find_if(withCascades.begin(), withCascades.end(),
+                                  [&](const auto& p) { return p->settings.cascades == cascades; });
+        if (scene == withCascades.end()) {
+          withCascades.push_back(rt::prepareSceneWithCascades(ctx, prepared, cascades));
+          scene = withCascades.end() - 1;
+        }
         rt::RunOptions ro;
         ro.warmup = spec.warmup;
         ro.runs = spec.runs;
-        const rt::SceneRunResult run = rt::runOnScene(ctx, *comp.passes, *prepared, ro);
+        const rt::SceneRunResult run = rt::runOnScene(ctx, *comp.passes, **scene, ro);
         row.passes.clear();
         for (const auto& p : run.outputs.timing->passes) row.passes.push_back({p.name, p.kind, p.medianMs});
         row.totalMs = run.outputs.timing->totalMs;

@@ -9,6 +9,17 @@
 #include "runtime/reference/embree_reference.h"
 
 namespace shadowc::rt {
+namespace {
+
+// The light side of a preparation: the frame (with the settings' cascades) and the rasterized
+// light depth and G-buffer.
+void fitAndRasterize(VulkanContext& ctx, PreparedScene& p) {
+  p.setup = setupFrame(p.scene, p.settings.map, p.settings.screen, p.settings.screen, p.settings.cubeTanHalf);
+  setupCascades(p.scene, p.settings.cascades, p.setup);
+  p.raster = rasterize(ctx, p.scene, p.setup);
+}
+
+}  // namespace
 
 std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, const SceneSettings& settings,
                                                   const ReferenceProgressFn& progress) {
@@ -22,9 +33,7 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
   auto p = std::make_shared<PreparedScene>();
   p->settings = settings;
   p->scene = std::move(scene);
-  p->setup = setupFrame(p->scene, settings.map, settings.screen, settings.screen, settings.cubeTanHalf);
-  setupCascades(p->scene, settings.cascades, p->setup);
-  p->raster = rasterize(ctx, p->scene, p->setup);
+  fitAndRasterize(ctx, *p);
   const std::vector<float> positions = p->raster.gbufferPosition.floats();
   p->mask = geometryMask(positions);
   if (!settings.traceReference) return p;
@@ -40,6 +49,19 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
   p->reference = std::move(reference.visibility);
   p->referenceFromCache = reference.fromCache;
   p->referenceCacheWarning = reference.cacheWarning;
+  return p;
+}
+
+std::shared_ptr<const PreparedScene> prepareSceneWithCascades(VulkanContext& ctx,
+                                                              std::shared_ptr<const PreparedScene> base,
+                                                              const CascadeConfig& cascades) {
+  if (base->settings.cascades == cascades) return base;
+  auto p = std::make_shared<PreparedScene>(*base);
+  p->settings.cascades = cascades;
+  fitAndRasterize(ctx, *p);  // setupCascades refuses cascades on a spot or point light (SceneError)
+  // Same camera, same G-buffer: the base's reference and mask hold for this frame too.
+  if (p->raster.gbufferPosition.floats() != base->raster.gbufferPosition.floats())
+    throw std::logic_error("the cascades changed the camera's G-buffer of scene '" + base->scene.name + "'");
   return p;
 }
 

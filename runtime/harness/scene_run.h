@@ -60,6 +60,13 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, const Scen
 // reports scene errors before device errors); settings.scene is only its label.
 std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scene, const SceneSettings& settings,
                                                   const ReferenceProgressFn& progress = {});
+// `base` prepared for a filter with other cascades (cascadeConfigFromSpec of its manifest): the
+// frame fitted and the light depth rasterized again, the reference and geometry mask shared (the
+// camera and G-buffer do not depend on the cascades, so neither does the reference). `base`
+// itself when the cascades are already its own. What `sweep` and `plan` run cascaded filters on.
+std::shared_ptr<const PreparedScene> prepareSceneWithCascades(VulkanContext& ctx,
+                                                              std::shared_ptr<const PreparedScene> base,
+                                                              const CascadeConfig& cascades);
 
 struct SceneRunResult {
   RunOutputs outputs;  // visibility, timing (when runs > 0)
