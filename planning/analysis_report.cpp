@@ -60,6 +60,8 @@ nlohmann::ordered_json toJson(const SceneStats& s) {
                     {"lit", s.lit},
                     {"umbra", s.umbra},
                     {"penumbra", s.penumbra}};
+  if (!s.faceReceivers.empty()) j["cube_face_receivers"] = s.faceReceivers;  // +x -x +y -y +z -z
+  j["camera_depth"] = {{"p01", s.cameraDepthP01}, {"p99", s.cameraDepthP99}, {"ratio", s.cameraDepthRatio()}};
   j["search_texels_p99"] = s.searchTexelsP99;
   j["penumbra_texels"] = distJson(s.penumbraTexels);
   j["penumbra_below_1_5_texels"] = s.fractionPenumbraBelow(1.5);
@@ -83,9 +85,20 @@ std::string formatSummary(const SceneStats& s) {
     out +=
         fmt::format("light    sun angle {:.3g} deg (penumbra slope {:g})  near {:g}  far {:g}\n",
                     2 * std::atan(0.5 * s.lightWidth) * 180 / 3.14159265358979, s.lightWidth, s.nearPlane, s.farPlane);
+  else if (s.lightShape == "sphere")  // a point light: six cube faces, texels of a face's atlas cell
+    out += fmt::format("light    point (sphere) diameter {:g}  near {:g}  far {:g}; cube faces {}^2 texels each\n",
+                       s.lightWidth, s.nearPlane, s.farPlane, s.mapSize / 3);
   else
     out += fmt::format("light    {} width {:g}  near {:g}  far {:g}\n", s.lightShape, s.lightWidth, s.nearPlane,
                        s.farPlane);
+  if (!s.faceReceivers.empty()) {
+    static const char* kFaces[] = {"+x", "-x", "+y", "-y", "+z", "-z"};
+    out += "receivers per cube face (statistics below merge all six):";
+    for (size_t f = 0; f < s.faceReceivers.size(); ++f) out += fmt::format(" {} {}", kFaces[f], s.faceReceivers[f]);
+    out += "\n";
+  }
+  out += fmt::format("camera depth of receivers p01 {:.3g}  p99 {:.3g}  (ratio {:.3g})\n", s.cameraDepthP01,
+                     s.cameraDepthP99, s.cameraDepthRatio());
   out += fmt::format("receivers {} front-facing ({} back-facing): lit {:.1f} %, umbra {:.1f} %, penumbra {:.1f} %\n",
                      s.receivers, s.backFacing, pct(s.lit, s.receivers), pct(s.umbra, s.receivers),
                      pct(s.penumbra, s.receivers));

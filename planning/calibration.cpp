@@ -17,23 +17,49 @@ constexpr const char* kEnd = "<!-- plan report: end -->";
 
 }  // namespace
 
+namespace {
+
+// The rows of several sweeps as one set (joinSweep groups them by scene and variant name).
+void append(sweep::Results& all, const sweep::Results& more) {
+  if (all.sweep.empty()) all.sweep = more.sweep;
+  all.rows.insert(all.rows.end(), more.rows.begin(), more.rows.end());
+  all.skipped.insert(all.skipped.end(), more.skipped.begin(), more.skipped.end());
+}
+
+}  // namespace
+
 sweep::Results calibrationRows(const CalibrationRequest& request, const std::filesystem::path& sweepDir,
                                const std::string& device) {
-  sweep::SweepOptions o;
-  o.outDir = sweepDir;
-  o.device = device;
-  o.jobs = 1;  // compiling in one thread leaves the other cores to whoever shares the machine
-  o.tty = 0;
-  const sweep::SweepOutcome outcome = sweep::runSweep(calibrationSweep(request), o, stderr);
-  for (const sweep::Skipped& s : outcome.results.skipped)
-    if (request.log) request.log(fmt::format("calibration sweep skipped {}: {}", s.variant, s.message));
-  const std::string warning = sweep::writeOutputs(sweepDir, outcome.results);  // results.json, report.html
-  if (!warning.empty() && request.log) request.log("calibration sweep: warning: " + warning);
-  return outcome.results;
+  sweep::Results all;
+  for (LightType light : kCalibrationLights) {  // one sweep per light type (calibration_sweep.h)
+    if (calibrationScenes(request, light).empty()) continue;
+    sweep::SweepOptions o;
+    o.outDir = sweepDir / calibrationSubdir(light);
+    o.device = device;
+    o.jobs = 1;  // compiling in one thread leaves the other cores to whoever shares the machine
+    o.tty = 0;
+    const sweep::SweepOutcome outcome = sweep::runSweep(calibrationSweep(request, light), o, stderr);
+    for (const sweep::Skipped& s : outcome.results.skipped)
+      if (request.log) request.log(fmt::format("calibration sweep skipped {}: {}", s.variant, s.message));
+    const std::string warning = sweep::writeOutputs(o.outDir, outcome.results);  // results.json, report.html
+    if (!warning.empty() && request.log) request.log("calibration sweep: warning: " + warning);
+    append(all, outcome.results);
+  }
+  return all;
 }
 
 sweep::Results sweepRows(const std::filesystem::path& fromSweep) {
-  return sweep::readResultsJson(fromSweep / "results.json");
+  // The spot sweep's results.json (read even when absent, for its message) unless only the
+  // other lights' sweeps ran.
+  sweep::Results all;
+  const bool others = std::filesystem::exists(fromSweep / "sun" / "results.json") ||
+                      std::filesystem::exists(fromSweep / "point" / "results.json");
+  if (!others || std::filesystem::exists(fromSweep / "results.json"))
+    all = sweep::readResultsJson(fromSweep / "results.json");
+  for (LightType light : {LightType::Sun, LightType::Point})
+    if (const auto more = fromSweep / calibrationSubdir(light) / "results.json"; std::filesystem::exists(more))
+      append(all, sweep::readResultsJson(more));
+  return all;
 }
 
 std::vector<ReportRow> planReport(rt::VulkanContext& ctx, const SweepData& data, const PlanModel& model) {
@@ -90,7 +116,7 @@ std::string formatReport(const std::vector<ReportRow>& rows, const SweepData& da
       "| scene | bound | plan | plan ms | plan RMSE | confirmed | everything on ms | everything on RMSE | fastest "
       "within bound (exhaustive) | its ms | its RMSE | everything / plan | plan / fastest |\n";
   out += "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
-  size_t twice = 0, within = 0, met = 0;
+  size_t twice = 0, within = 0, met = 0, refused = 0;
   for (const ReportRow& r : rows) {
     if (!r.planError.empty()) {
       out += fmt::format("| {} | {:.4f} | plan failed: {} | | | | {:.2f} | {:.4f} | {} | {:.2f} | {:.4f} | | |\n",
@@ -98,20 +124,28 @@ std::string formatReport(const std::vector<ReportRow>& rows, const SweepData& da
                          r.fastest.worstMs, r.fastest.worstRmse);
       continue;
     }
-    const double speedup = r.everything.worstMs / std::max(1e-9, r.plan.worstMs);
     const double ratio = r.plan.worstMs / std::max(1e-9, r.fastest.worstMs);
-    twice += speedup >= 2;
     within += ratio <= 1.1;
     met += r.plan.worstRmse <= r.bound;
+    if (r.everything.variant.empty()) {  // a point light: the checker refuses VSSM's SAT on a cube atlas
+      ++refused;
+      out += fmt::format(
+          "| {} | {:.4f} | {} | {:.2f} | {:.4f} | {} | refused (E0450) | | {} | {:.2f} | {:.4f} | | {:.2f}x |\n",
+          r.scene, r.bound, r.plan.variant, r.plan.worstMs, r.plan.worstRmse, r.confirmed, r.fastest.variant,
+          r.fastest.worstMs, r.fastest.worstRmse, ratio);
+      continue;
+    }
+    const double speedup = r.everything.worstMs / std::max(1e-9, r.plan.worstMs);
+    twice += speedup >= 2;
     out += fmt::format(
         "| {} | {:.4f} | {} | {:.2f} | {:.4f} | {} | {:.2f} | {:.4f} | {} | {:.2f} | {:.4f} | {:.2f}x | {:.2f}x |\n",
         r.scene, r.bound, r.plan.variant, r.plan.worstMs, r.plan.worstRmse, r.confirmed, r.everything.worstMs,
         r.everything.worstRmse, r.fastest.variant, r.fastest.worstMs, r.fastest.worstRmse, speedup, ratio);
   }
   out += fmt::format(
-      "\nOn {} scenes: the plan met its bound on {}, was at least 2x faster than everything on on {}, and within "
-      "1.1x of the exhaustive fastest on {}.\n",
-      rows.size(), met, twice, within);
+      "\nOn {} scenes: the plan met its bound on {}, was at least 2x faster than everything on on {} (of the {} "
+      "where everything on compiles), and within 1.1x of the exhaustive fastest on {}.\n",
+      rows.size(), met, twice, rows.size() - refused, within);
   for (const std::string& w : data.warnings) out += "\nNote: " + w + "\n";
   return out;
 }

@@ -4,6 +4,7 @@
 
 #include <nlohmann/json.hpp>
 #include <set>
+#include <tuple>
 
 #include "driver/driver.h"
 #include "runtime/scene/scene.h"
@@ -14,20 +15,27 @@ namespace {
 
 bool isDepthFamily(const Candidate& c) { return c.has(Feature::SlopeBias); }
 
-DescribeOptions sweepDescribeOptions(const Candidate& c, bool slopeBias) {
+DescribeOptions sweepDescribeOptions(const Candidate& c, bool slopeBias, LightType light) {
   DescribeOptions d;
   d.filterName = sweepVariantName(c, slopeBias);
   d.slopeBias = slopeBias;
   d.contactEpsilon = 0.01;  // preparePlanScenes' (the analysis' contact epsilon)
+  d.light = light;
   return d;
+}
+
+LightType lightOf(const rt::Scene& s) {
+  return s.light.type == rt::LightType::Sun     ? LightType::Sun
+         : s.light.type == rt::LightType::Point ? LightType::Point
+                                                : LightType::Spot;
 }
 
 // The checker's normalized spec of a candidate as the sweep measures it (what a row's "spec"
 // holds), without the filter name.
-nlohmann::json normalizedSpec(const Candidate& c, bool slopeBias) {
+nlohmann::json normalizedSpec(const Candidate& c, bool slopeBias, LightType light) {
   driver::Options o;
   o.stopAfter = driver::Stage::Check;
-  const std::string text = describeCandidate(c, sweepDescribeOptions(c, slopeBias));
+  const std::string text = describeCandidate(c, sweepDescribeOptions(c, slopeBias, light));
   const driver::Result r = driver::compileSource(text, c.name, o);
   if (!r.spec) throw std::logic_error("planner candidate '" + c.name + "' is not a valid filter:\n" + r.log);
   nlohmann::json j = nlohmann::json::parse(specToJson(*r.spec).dump());
@@ -51,29 +59,44 @@ std::string sceneSource(const std::string& label, const std::filesystem::path& d
 }  // namespace
 
 std::string sweepVariantName(const Candidate& c, bool slopeBias) {
-  return isDepthFamily(c) && !slopeBias ? c.name + "_constant_bias" : c.name;
+  // A cascaded candidate has one bias (a normal offset, candidateSpec), so one variant.
+  return isDepthFamily(c) && !slopeBias && c.cascades == 0 ? c.name + "_constant_bias" : c.name;
 }
 
-// The catalog's candidates are spot-light filters (a filter reads its map through its light's
-// projection, runOnScene refuses a mismatch): the default calibration set is the spot scenes.
-std::vector<std::string> defaultCalibrationScenes() {
+// A filter reads its map through its light's projection (runOnScene refuses a mismatch), so the
+// calibration is one sweep per light type: the candidates the checker accepts for that light,
+// written with it, over the scenes of that light.
+std::vector<std::string> defaultCalibrationScenes(LightType light) {
   std::vector<std::string> names;
   for (const std::string& n : rt::builtinSceneNames())
-    if (rt::loadScene(n).light.type == rt::LightType::Spot) names.push_back(n);
+    if (lightOf(rt::loadScene(n)) == light) names.push_back(n);
   return names;
 }
 
-std::string calibrationSweepJson(const CalibrationRequest& r) {
+std::vector<std::string> calibrationScenes(const CalibrationRequest& r, LightType light) {
+  if (r.scenes.empty()) return defaultCalibrationScenes(light);
+  std::vector<std::string> names;
+  for (const std::string& n : r.scenes)
+    if (lightOf(rt::loadScene(n)) == light) names.push_back(n);
+  return names;
+}
+
+std::string calibrationSubdir(LightType light) {
+  return light == LightType::Sun ? "sun" : light == LightType::Point ? "point" : "";
+}
+
+std::string calibrationSweepJson(const CalibrationRequest& r, LightType light) {
   nlohmann::ordered_json j;
-  j["name"] = "plan_calibration";
+  j["name"] = light == LightType::Spot ? "plan_calibration" : "plan_calibration_" + calibrationSubdir(light);
   auto& filters = j["filters"] = nlohmann::ordered_json::array();
   for (const Candidate& c : candidateCatalog())
     for (bool slope : {true, false}) {
-      if (!slope && !isDepthFamily(c)) continue;
-      filters.push_back(
-          {{"name", sweepVariantName(c, slope)}, {"text", describeCandidate(c, sweepDescribeOptions(c, slope))}});
+      if (!slope && (!isDepthFamily(c) || c.cascades > 0)) continue;
+      const DescribeOptions d = sweepDescribeOptions(c, slope, light);
+      if (!candidateAccepted(c, d)) continue;  // e.g. cascades off a sun, a SAT on a cube atlas
+      filters.push_back({{"name", sweepVariantName(c, slope)}, {"text", describeCandidate(c, d)}});
     }
-  j["scenes"] = r.scenes.empty() ? defaultCalibrationScenes() : r.scenes;
+  j["scenes"] = calibrationScenes(r, light);
   j["screen"] = r.screen;
   j["map"] = r.map;
   j["reference_samples"] = r.samples;
@@ -82,8 +105,9 @@ std::string calibrationSweepJson(const CalibrationRequest& r) {
   return j.dump(1) + "\n";
 }
 
-sweep::SweepSpec calibrationSweep(const CalibrationRequest& r) {
-  return sweep::parseSweepSpec(calibrationSweepJson(r), "plan_calibration.json", std::filesystem::current_path());
+sweep::SweepSpec calibrationSweep(const CalibrationRequest& r, LightType light) {
+  return sweep::parseSweepSpec(calibrationSweepJson(r, light), "plan_calibration.json",
+                               std::filesystem::current_path());
 }
 
 SweepData joinSweep(rt::VulkanContext& ctx, const sweep::Results& results, const std::filesystem::path& dir,
@@ -108,13 +132,14 @@ SweepData joinSweep(rt::VulkanContext& ctx, const sweep::Results& results, const
     if (!byCase.count(row.caseLabel)) order.push_back(row.caseLabel);
     byCase[row.caseLabel][row.base] = &row;
   }
-  std::map<std::pair<std::string, bool>, nlohmann::json> specs;  // normalized once per variant
+  std::map<std::tuple<std::string, bool, LightType>, nlohmann::json> specs;  // normalized once per variant
   for (const std::string& label : order) {
     const auto& rows = byCase.at(label);
     SweepScene sc;
     const sweep::Row& any = *rows.begin()->second;
     sc.label = any.scene;  // the scene's label; every row has the same sizes
     rt::Scene scene = rt::loadScene(sceneSource(any.scene, dir));
+    const LightType light = lightOf(scene);
     rt::SceneSettings settings;
     settings.scene = any.scene;
     settings.screen = data.screen;
@@ -126,14 +151,16 @@ SweepData joinSweep(rt::VulkanContext& ctx, const sweep::Results& results, const
     const bool slope = useSlopeBias(sc.scenes.stats, rules);
     for (const Candidate& c : candidateCatalog()) {
       const std::string name = sweepVariantName(c, slope);
+      if (!candidateAccepted(c, sweepDescribeOptions(c, slope, light))) continue;  // not swept for this light
       const auto it = rows.find(name);
       if (it == rows.end()) {
         data.warnings.push_back(fmt::format("{}: no row for {}", sc.label, name));
         continue;
       }
       const sweep::Row& row = *it->second;
-      auto sit = specs.find({c.name, slope});
-      if (sit == specs.end()) sit = specs.emplace(std::make_pair(c.name, slope), normalizedSpec(c, slope)).first;
+      auto sit = specs.find({c.name, slope, light});
+      if (sit == specs.end())
+        sit = specs.emplace(std::make_tuple(c.name, slope, light), normalizedSpec(c, slope, light)).first;
       // Compared as unordered JSON: rows read back from results.json have their keys sorted.
       nlohmann::json measured = nlohmann::json::parse(row.spec.dump());
       measured.erase("name");

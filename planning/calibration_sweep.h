@@ -19,16 +19,23 @@ namespace shadowc::planning {
 
 // The sweep variant a candidate is measured as. Depth families (hard, pcf, pcss) come twice,
 // with the slope-scaled bias (the candidate's name) and with the constant one
-// ("<name>_constant_bias"), because the planner picks the bias per scene (useSlopeBias).
+// ("<name>_constant_bias"), because the planner picks the bias per scene (useSlopeBias); a
+// cascaded one once (its bias is a normal offset either way).
 std::string sweepVariantName(const Candidate& c, bool slopeBias);
 
-// The description: every candidate x every scene of the request at its screen, map, samples,
-// runs and warm-up. Deterministic: the same request gives the same bytes.
-// The built-in scenes a calibration covers by default: the spot-light ones (the candidates are spot
-// filters; runOnScene refuses a filter whose light differs from the scene's).
-std::vector<std::string> defaultCalibrationScenes();
-std::string calibrationSweepJson(const CalibrationRequest& request);
-sweep::SweepSpec calibrationSweep(const CalibrationRequest& request);
+// One description per light type (a filter reads its map through its light's projection and
+// runOnScene refuses a mismatch): every candidate the checker accepts for that light, written with
+// it (`light area(size: scene)`, `sun(angle: scene)`, `point(radius: scene)`), x every scene of
+// the request with that light (default: the built-ins with it), at the request's screen, map,
+// samples, runs and warm-up. Deterministic: the same request gives the same bytes. The spot
+// sweep runs into the sweep directory itself, the others into its sun/ and point/
+// subdirectories (calibrationSubdir); the rows of all of them are joined (joinSweep).
+std::vector<std::string> defaultCalibrationScenes(LightType light = LightType::Spot);
+std::vector<std::string> calibrationScenes(const CalibrationRequest& request, LightType light);
+std::string calibrationSubdir(LightType light);  // "", "sun", "point"
+std::string calibrationSweepJson(const CalibrationRequest& request, LightType light = LightType::Spot);
+sweep::SweepSpec calibrationSweep(const CalibrationRequest& request, LightType light = LightType::Spot);
+inline constexpr LightType kCalibrationLights[] = {LightType::Spot, LightType::Sun, LightType::Point};
 
 // A sweep's rows joined to the candidates: per scene (case label), the scene prepared without
 // a reference and analyzed, and each candidate's measurement with the bias the planner would

@@ -115,6 +115,7 @@ PlanModel parseModel(const std::string& text, const std::string& label) {
     m.rules.satTexels = r.at("sat_texels");
     m.rules.quadtreeTexels = r.at("quadtree_texels");
     m.rules.slopeDegrees = r.at("slope_degrees");
+    m.rules.cascadeDepthRatio = r.value("cascade_depth_ratio", PlanRules{}.cascadeDepthRatio);
     m.rules.confirmMargin = r.at("confirm_margin");
     m.rules.confirmTimeSlack = r.at("confirm_time_slack");
     m.generatedBy = j.at("generated_by");
@@ -165,11 +166,13 @@ std::string modelToJson(const PlanModel& m) {
   j["format_version"] = 2;  // 2: runs carry their screen and map
   j["generated_by"] = m.generatedBy;
   j["calibration"] = {{"screen", m.screen}, {"map", m.map}, {"samples", m.samples}};
-  j["rules"] = {{"penumbra_texels", m.rules.penumbraTexels},   {"penumbra_quantile", m.rules.penumbraQuantile},
-                {"contact_fraction", m.rules.contactFraction}, {"multi_depth_fraction", m.rules.multiDepthFraction},
-                {"uniform_fraction", m.rules.uniformFraction}, {"sat_texels", m.rules.satTexels},
-                {"quadtree_texels", m.rules.quadtreeTexels},   {"slope_degrees", m.rules.slopeDegrees},
-                {"confirm_margin", m.rules.confirmMargin},     {"confirm_time_slack", m.rules.confirmTimeSlack}};
+  j["rules"] = {
+      {"penumbra_texels", m.rules.penumbraTexels},        {"penumbra_quantile", m.rules.penumbraQuantile},
+      {"contact_fraction", m.rules.contactFraction},      {"multi_depth_fraction", m.rules.multiDepthFraction},
+      {"uniform_fraction", m.rules.uniformFraction},      {"sat_texels", m.rules.satTexels},
+      {"quadtree_texels", m.rules.quadtreeTexels},        {"slope_degrees", m.rules.slopeDegrees},
+      {"cascade_depth_ratio", m.rules.cascadeDepthRatio}, {"confirm_margin", m.rules.confirmMargin},
+      {"confirm_time_slack", m.rules.confirmTimeSlack}};
   j["error_terms"] = kErrorTerms;
   nlohmann::ordered_json vs = nlohmann::ordered_json::object();
   for (const auto& [name, v] : m.variants) {

@@ -26,6 +26,7 @@ struct PlanRules {
   double satTexels = 6;              // SAT ruled out when the p99 penumbra is narrower (taps cover it)
   double quadtreeTexels = 12;        // quadtree ruled out when the p99 penumbra is narrower
   double slopeDegrees = 45;          // slope-scaled bias when the p99 receiver slope is steeper
+  double cascadeDepthRatio = 8;      // cascades (a sun) offered from this receivers' camera depth p99 / p01
   double confirmMargin = 3;          // candidates predicted above bound * margin are confirmed last
   // After a candidate meets the bound, the next ones are confirmed too while their predicted
   // time is below slack x the best measured time (the model's order is not the measured one:

@@ -33,7 +33,10 @@ std::pair<double, std::string> worst(const std::vector<SceneStats>& stats, F val
 }
 
 std::string where(const std::vector<SceneStats>& stats, const std::string& scene) {
-  return stats.size() > 1 ? fmt::format(" (worst scene: {})", scene) : "";
+  std::string w = stats.size() > 1 ? fmt::format(" (worst scene: {})", scene) : "";
+  // A point light's statistics are taken per cube face and merged (scene_analysis.h).
+  if (!stats.empty() && stats[0].lightShape == "sphere") w += ", over the 6 cube faces";
+  return w;
 }
 
 }  // namespace
@@ -64,21 +67,31 @@ bool useSlopeBias(const std::vector<SceneStats>& stats, const PlanRules& rules) 
 }
 
 // The candidates' light follows the scenes' (a filter reads its map through its light's
-// projection); scenes of both kinds cannot share one filter.
-bool sunScenes(const PlanScenes& scenes) {
-  size_t suns = 0;
-  for (const auto& p : scenes.prepared) {
-    suns += p->scene.light.type == rt::LightType::Sun;
-    // Candidates are spot or sun filters; scene_analysis measures no cube faces (issue 14 item 4).
-    if (p->scene.light.type == rt::LightType::Point)
-      throw PlanError("plan does not analyze point-light scenes yet ('" + p->scene.name +
-                      "'): compile a 'light point(radius: scene)' filter and check it with 'shadowc validate'");
-  }
-  if (suns != 0 && suns != scenes.prepared.size())
-    throw PlanError(
-        "plan scenes mix sun and spot lights: one filter reads its map through one projection; plan "
-        "them separately");
-  return suns != 0;
+// projection: frame.glsl, frame_ortho.glsl or frame_cube.glsl); scenes of several kinds cannot
+// share one filter.
+LightType planLight(const PlanScenes& scenes) {
+  auto kind = [](rt::LightType t) {
+    return t == rt::LightType::Sun ? LightType::Sun : t == rt::LightType::Point ? LightType::Point : LightType::Spot;
+  };
+  auto word = [](LightType t) { return t == LightType::Sun ? "sun" : t == LightType::Point ? "point" : "spot"; };
+  if (scenes.prepared.empty()) return LightType::Spot;
+  const LightType first = kind(scenes.prepared[0]->scene.light.type);
+  for (const auto& p : scenes.prepared)
+    if (kind(p->scene.light.type) != first)
+      throw PlanError(fmt::format(
+          "plan scenes mix lights ('{}' has a {} light, '{}' a {} light): one filter reads its map through one "
+          "projection; plan them separately",
+          scenes.prepared[0]->scene.name, word(first), p->scene.name, word(kind(p->scene.light.type))));
+  return first;
+}
+
+// The scenes of `base` prepared for the candidate's cascades (the reference shared), one per scene.
+std::vector<std::shared_ptr<const rt::PreparedScene>> scenesFor(rt::VulkanContext& ctx, const PlanScenes& base,
+                                                                const CompiledPasses& passes) {
+  const rt::CascadeConfig cascades = rt::cascadeConfigFromSpec(passes.manifest.spec);
+  std::vector<std::shared_ptr<const rt::PreparedScene>> out;
+  for (const auto& p : base.prepared) out.push_back(rt::prepareSceneWithCascades(ctx, p, cascades));
+  return out;
 }
 
 std::string measurementKey(const std::string& variant, const PlanScenes& scenes, bool slopeBias) {
@@ -90,7 +103,7 @@ Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const P
   DescribeOptions d;
   d.slopeBias = useSlopeBias(scenes.stats, model.rules);
   d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
-  d.sun = sunScenes(scenes);
+  d.light = planLight(scenes);
   const std::string key = measurementKey(c.name, scenes, d.slopeBias);
   if (cache) {
     auto it = cache->find(key);
@@ -102,7 +115,7 @@ Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const P
   const CompiledPasses passes = r.artifact->passes();
   Measurement m;
   m.variant = c.name;
-  for (const auto& prepared : scenes.prepared) {
+  for (const auto& prepared : scenesFor(ctx, scenes, passes)) {
     rt::RunOptions options;
     options.warmup = warmup;
     options.runs = runs;
@@ -154,6 +167,17 @@ std::map<Feature, FeatureVerdict> featureVerdicts(const std::vector<SceneStats>&
                                       where(stats, uniform.second))};
   const auto slope = worst(
       stats, [](const SceneStats& s) { return s.slopeDegrees.p99; }, true);
+  // Cascades: a sun's one map spreads its texels evenly over depths the camera sees at very
+  // different scales; cut into slices where the receivers' camera depths span a wide ratio.
+  const auto depthRatio = worst(
+      stats, [](const SceneStats& s) { return s.cameraDepthRatio(); }, true);
+  bool allSuns = !stats.empty();
+  for (const SceneStats& s : stats) allSuns = allSuns && s.lightShape == "sun";
+  v[Feature::Cascades] = {!allSuns || depthRatio.first < r.cascadeDepthRatio,
+                          allSuns
+                              ? fmt::format("receivers' camera depth p99 / p01 = {:.1f} (cascades offered from {:g}){}",
+                                            depthRatio.first, r.cascadeDepthRatio, where(stats, depthRatio.second))
+                              : std::string("cascades split a sun's orthographic map; this light has no cascades")};
   v[Feature::SlopeBias] = {slope.first <= r.slopeDegrees,
                            fmt::format("p99 receiver slope {:.1f} degrees (slope-scaled above {:g}){}", slope.first,
                                        r.slopeDegrees, where(stats, slope.second))};
@@ -176,14 +200,37 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
     bool allowed;
     double ms, rmse;  // predicted, worst over scenes
   };
+  DescribeOptions light;
+  light.light = planLight(scenes);
   std::vector<Option> options;
+  std::map<Feature, std::string> refusedFor;  // a feature whose every candidate the checker refuses
+  for (Feature f : kFeatures) {
+    std::string why;
+    bool anyAccepted = false, any = false;
+    for (const Candidate& c : candidateCatalog())
+      if (c.has(f)) {
+        any = true;
+        std::string w;
+        if (candidateAccepted(c, light, &w))
+          anyAccepted = true;
+        else if (why.empty())
+          why = w.substr(0, w.find(':'));  // the code
+      }
+    if (any && !anyAccepted) refusedFor[f] = why;
+  }
   for (const Candidate& c : candidateCatalog()) {
-    if (!model.variants.count(c.name)) continue;
+    // A cascaded candidate the calibration has not measured is predicted as its one-map sibling
+    // (the same taps per pixel; the confirmation measures it anyway).
+    std::string modelName = c.name;
+    if (!model.variants.count(modelName) && c.cascades > 0)
+      modelName = c.name.substr(0, c.name.rfind(fmt::format("_cascades{}", c.cascades)));
+    if (!model.variants.count(modelName)) continue;
+    if (!candidateAccepted(c, light)) continue;  // the checker decides what serves this light
     Option o{&c, true, 0, 0};
     for (Feature f : kFeatures)
       if (f != Feature::SlopeBias && c.has(f) && verdicts.at(f).ruledOut) o.allowed = false;
-    o.ms = model.predictMs(c.name, request.map, request.screen);
-    for (const SceneStats& s : scenes.stats) o.rmse = std::max(o.rmse, model.predictRmse(c.name, s));
+    o.ms = model.predictMs(modelName, request.map, request.screen);
+    for (const SceneStats& s : scenes.stats) o.rmse = std::max(o.rmse, model.predictRmse(modelName, s));
     options.push_back(o);
   }
   // Confirmation order: candidates the statistics allow and the model predicts within the
@@ -251,20 +298,30 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
   d.filterName = request.filterName;
   d.slopeBias = useSlopeBias(scenes.stats, model.rules);
   d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
-  d.sun = sunScenes(scenes);
+  d.light = light.light;
   const bool depthFamily = result.chosen.has(Feature::SlopeBias);
   for (Feature f : kFeatures) {
     const FeatureVerdict& v = verdicts.at(f);
+    if (f == Feature::Cascades && d.light != LightType::Sun) continue;  // only a sun has cascades to keep or drop
     std::string line;
     if (f == Feature::SlopeBias) {
       line = !depthFamily
                  ? fmt::format("{} dropped: moment filters take no depth bias; {}", featureName(f), v.statistic)
+             : result.chosen.cascades > 0
+                 ? fmt::format("{} dropped: cascades take a normal offset in their own texels; {}", featureName(f),
+                               v.statistic)
+             : d.slopeBias && d.light == LightType::Point
+                 ? fmt::format("{} kept, in the receiver-plane form (per tap, in the receiver's cube face): {}",
+                               featureName(f), v.statistic)
              : d.slopeBias ? fmt::format("{} kept: {}", featureName(f), v.statistic)
                            : fmt::format("{} dropped: {}", featureName(f), v.statistic);
     } else if (result.chosen.has(f)) {
       line = v.ruledOut ? fmt::format("{} kept: {}, but every variant without it missed the bound", featureName(f),
                                       v.statistic)
                         : fmt::format("{} kept: {}", featureName(f), v.statistic);
+    } else if (refusedFor.count(f)) {
+      line = fmt::format("{} dropped: {}; the checker refuses every variant with it for this light ({})",
+                         featureName(f), v.statistic, refusedFor.at(f));
     } else {
       line = v.ruledOut ? fmt::format("{} dropped: {}", featureName(f), v.statistic)
                         : fmt::format("{} dropped: {}; the cheapest variant within the bound does without it",

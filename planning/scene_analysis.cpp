@@ -4,6 +4,8 @@
 #include <cmath>
 #include <glm/glm.hpp>
 
+#include "runtime/scene/cube_setup.h"
+
 namespace shadowc::planning {
 namespace {
 
@@ -34,7 +36,8 @@ Distribution makeDistribution(std::vector<double> values, std::vector<double> ed
 // Light-view geometry of frame.glsl (a spot): uv = 0.5 + 0.5 xy / (z tanHalfFov), and of
 // frame_ortho.glsl (a sun): uv = 0.5 + 0.5 xy / halfExtent; both d = (z - n) / (f - n).
 // `width` is the light's width in world units for a spot, the penumbra slope 2 tan(angle / 2)
-// for a sun (lightParams.w in both).
+// for a sun (lightParams.w in both). A point light's cube face (frame_cube.glsl) is a spot frame
+// in the face's axes whose map is the face's atlas cell.
 struct LightFrame {
   glm::mat4 view;
   double scale, n, f, width;  // scale: tanHalfFov (spot) or halfExtent (sun)
@@ -111,37 +114,47 @@ double SceneStats::uniformFraction() const { return receivers ? double(lit + umb
 
 SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& options) {
   const ShadowcFrame& fr = scene.setup.frame;
-  LightFrame lf{scene.setup.lightView, fr.lightParams[0],   fr.lightParams[1],       fr.lightParams[2],
-                fr.lightParams[3],     scene.setup.mapSize, scene.setup.orthographic};
+  const bool cube = scene.setup.cube;
+  const uint32_t atlas = scene.setup.mapSize;
+  // A cube's six faces share near, far, tan(half fov) and the light; each is a cell of the atlas.
+  LightFrame lf{scene.setup.lightView,   fr.lightParams[0], fr.lightParams[1],
+                fr.lightParams[2],       fr.lightParams[3], cube ? rt::cubeCellSize(atlas) : atlas,
+                scene.setup.orthographic};
   const uint32_t map = lf.map;
   const std::vector<float> depth = scene.raster.lightDepth.channel(0);
   const std::vector<float> pos = scene.raster.gbufferPosition.floats();
   const std::vector<float> nor = scene.raster.gbufferNormal.floats();
+  glm::ivec2 cell(0);  // the receiver's face cell in the atlas (0 for one map)
   auto depthAt = [&](int x, int y) {
-    x = std::clamp(x, 0, int(map) - 1);
-    y = std::clamp(y, 0, int(map) - 1);
-    return double(depth[size_t(y) * map + size_t(x)]);
+    x = cell.x + std::clamp(x, 0, int(map) - 1);
+    y = cell.y + std::clamp(y, 0, int(map) - 1);
+    return double(depth[size_t(y) * atlas + size_t(x)]);
   };
 
   SceneStats s;
   s.scene = scene.scene.name;
-  s.mapSize = map;
+  s.mapSize = atlas;  // the map asked for (a cube face is its cell of mapSize / 3)
   s.screen = scene.setup.width;
   s.lightWidth = lf.width;
-  s.lightShape = lf.ortho ? "sun" : fr.lightShape[0] == 0 ? "rect" : fr.lightShape[0] == 1 ? "disk" : "point";
+  s.lightShape = lf.ortho                ? "sun"
+                 : cube                  ? "sphere"
+                 : fr.lightShape[0] == 0 ? "rect"
+                 : fr.lightShape[0] == 1 ? "disk"
+                                         : "point";
+  s.faceReceivers.assign(cube ? 6 : 0, 0);
   s.nearPlane = lf.n;
   s.farPlane = lf.f;
   s.contactEpsilon = options.contactEpsilon;
   s.clusterCounts.assign(4, 0);
   s.depthMin = 1;
   s.depthMax = 0;
-  for (float d : depth)
+  for (float d : depth)  // a cube atlas' empty third row holds 1 ("nothing hit") and is skipped
     if (d < 1.0f) {
       s.depthMin = std::min(s.depthMin, double(d));
       s.depthMax = std::max(s.depthMax, double(d));
     }
 
-  std::vector<double> widths, separations, slopes, depthSlopes, search;
+  std::vector<double> widths, separations, slopes, depthSlopes, search, cameraDepths;
   struct Tap {
     double r2, d;  // squared offset (texels), blocker depth
   };
@@ -151,18 +164,29 @@ SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& o
   for (size_t i = 0; i < scene.mask.size(); ++i) {
     if (!scene.mask[i]) continue;
     const glm::dvec3 world(pos[4 * i], pos[4 * i + 1], pos[4 * i + 2]);
-    const glm::dvec3 p = glm::dvec3(glm::dmat4(lf.view) * glm::dvec4(world, 1.0));
+    glm::dvec3 p = glm::dvec3(glm::dmat4(lf.view) * glm::dvec4(world, 1.0));
+    glm::dvec3 nrm = glm::normalize(rot * glm::dvec3(nor[4 * i], nor[4 * i + 1], nor[4 * i + 2]));
+    int face = 0;
+    if (cube) {
+      // The face of the direction's major axis, as frame_cube.glsl picks it; then that face's axes.
+      face = rt::cubeFaceOf(glm::vec3(p));
+      const glm::dmat3 rows(rt::cubeFaceRows(face));
+      p = rows * p;
+      nrm = rows * nrm;
+      cell = glm::ivec2(rt::cubeCellOrigin(face, atlas));
+    }
     if (!(p.z > 0)) continue;
     const glm::dvec2 uv = lf.uv(p);
     const double u = uv.x, v = uv.y;
     if (u < 0 || u >= 1 || v < 0 || v >= 1) continue;
-    const glm::dvec3 nrm = glm::normalize(rot * glm::dvec3(nor[4 * i], nor[4 * i + 1], nor[4 * i + 2]));
     const double cosL = glm::dot(nrm, lf.toLight(p));
     if (cosL <= 0) {
       ++s.backFacing;
       continue;
     }
     ++s.receivers;
+    if (cube) ++s.faceReceivers[size_t(face)];
+    cameraDepths.push_back(-(glm::dmat4(scene.setup.cameraView) * glm::dvec4(world, 1.0)).z);
     slopes.push_back(glm::degrees(std::acos(std::min(1.0, cosL))));
     const double dr = lf.normalized(p.z);
     const double tx = u * map - 0.5, ty = v * map - 0.5;
@@ -226,6 +250,11 @@ SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& o
   s.separation = makeDistribution(std::move(separations), {1e-4, 1e-3, 3e-3, 1e-2, 3e-2, 0.1, 0.3});
   s.slopeDegrees = makeDistribution(std::move(slopes), {15, 30, 45, 60, 75, 85});
   s.depthSlopePerTexel = makeDistribution(std::move(depthSlopes), {1e-5, 1e-4, 5e-4, 1e-3, 5e-3, 1e-2});
+  std::sort(cameraDepths.begin(), cameraDepths.end());
+  if (!cameraDepths.empty()) {
+    s.cameraDepthP01 = cameraDepths[size_t(0.01 * double(cameraDepths.size()))];
+    s.cameraDepthP99 = cameraDepths[std::min(cameraDepths.size() - 1, size_t(0.99 * double(cameraDepths.size())))];
+  }
   std::sort(search.begin(), search.end());
   s.searchTexelsP99 = search.empty() ? 0 : search[std::min(search.size() - 1, size_t(0.99 * double(search.size())))];
   if (!s.separation.samples.empty()) {

@@ -43,7 +43,11 @@ struct SceneStats {
   std::string lightShape;
   double nearPlane = 0, farPlane = 0;
 
-  uint64_t receivers = 0;      // front-facing geometry pixels inside the shadow map
+  uint64_t receivers = 0;  // front-facing geometry pixels inside the shadow map
+  // A point light (lightShape "sphere"): receivers per cube face (+x, -x, +y, -y, +z, -z). Each
+  // receiver is analyzed in the face frame_cube.glsl picks for it (its texels are the face's atlas
+  // cell, its depths the face's); every statistic below merges the six faces.
+  std::vector<uint64_t> faceReceivers;
   uint64_t backFacing = 0;     // N.L <= 0: the N.L term's business, not the shadow's
   uint64_t lit = 0;            // no blocker in the search region
   uint64_t umbra = 0;          // every search tap is a blocker
@@ -62,6 +66,12 @@ struct SceneStats {
   double depthMin = 0, depthMax = 0;  // normalized depth of geometry in the map
   double separationP01 = 0;           // 1st percentile of d_r - d_b over blocked receivers
   int bitsNeeded = 0;                 // mantissa bits to resolve separationP01 near d = 1
+  // The camera's view depth range over the receivers (1st and 99th percentile of the distance
+  // along the view axis): what cascades exist for (one map's texels are spread evenly over a range
+  // the camera sees at very different scales; Zhang et al. 2006).
+  double cameraDepthP01 = 0, cameraDepthP99 = 0;
+  // Receivers' camera-depth ratio p99 / p01 (1 when there are none).
+  double cameraDepthRatio() const { return cameraDepthP01 > 0 ? cameraDepthP99 / cameraDepthP01 : 1.0; }
   // Receiver slopes.
   Distribution slopeDegrees;        // angle between N and the direction to the light centre
   Distribution depthSlopePerTexel;  // |d(receiver depth)/d(texel)| along the map's x axis

@@ -22,6 +22,23 @@ rt::VulkanContext& context() {
   return ctx;
 }
 
+// The candidates the checker accepts for a light (the calibration sweeps only those), and how
+// many sweep variants they make (depth families twice, with both biases).
+std::vector<planning::Candidate> acceptedFor(LightType light) {
+  planning::DescribeOptions d;
+  d.light = light;
+  std::vector<planning::Candidate> out;
+  for (const planning::Candidate& c : planning::candidateCatalog())
+    if (planning::candidateAccepted(c, d)) out.push_back(c);
+  return out;
+}
+size_t sweptVariants(LightType light) {
+  size_t n = 0;
+  for (const planning::Candidate& c : acceptedFor(light))
+    n += c.has(planning::Feature::SlopeBias) && c.cascades == 0 ? 2 : 1;
+  return n;
+}
+
 planning::CalibrationRequest tinyRequest() {
   planning::CalibrationRequest r;
   r.scenes = {"two_planes"};
@@ -51,7 +68,9 @@ TEST(CalibrationSweep, StoredDescriptionIsTodaysCatalog) {
   r.runs += 1;
   EXPECT_NE(planning::calibrationSweepJson(r), stored);
   // Every candidate is there; depth families with both biases.
-  EXPECT_EQ(j["filters"].size(), planning::candidateCatalog().size() + 5);
+  EXPECT_EQ(j["filters"].size(), sweptVariants(LightType::Spot));
+  // Sibling: the cascaded candidates are the checker's to refuse on a spot light (E0453).
+  EXPECT_LT(acceptedFor(LightType::Spot).size(), planning::candidateCatalog().size());
   EXPECT_EQ(r.scenes, planning::defaultCalibrationScenes());  // every built-in spot scene
   // Sibling: the default leaves out exactly the sun scenes (light types may not mix in one plan).
   EXPECT_LT(planning::defaultCalibrationScenes().size(), rt::builtinSceneNames().size());
@@ -63,19 +82,19 @@ TEST(CalibrationSweep, ModelIsFittedFromTheSweepRows) {
   const auto dir = test::freshTempDir("plan_calibration_sweep");
   const planning::CalibrationRequest request = tinyRequest();
   const sweep::Results ran = planning::calibrationRows(request, dir, "");
-  ASSERT_EQ(ran.rows.size(), planning::candidateCatalog().size() + 5);  // 5 depth families twice
-  const sweep::Results rows = planning::sweepRows(dir);                 // --from-sweep reads the same rows
+  ASSERT_EQ(ran.rows.size(), sweptVariants(LightType::Spot));  // depth families twice
+  const sweep::Results rows = planning::sweepRows(dir);        // --from-sweep reads the same rows
   ASSERT_EQ(rows.rows.size(), ran.rows.size());
   const planning::PlanRules rules;
   const planning::SweepData data = planning::joinSweep(context(), rows, dir, rules);
   EXPECT_TRUE(data.warnings.empty()) << data.warnings.front();
   ASSERT_EQ(data.scenes.size(), 1u);
   const planning::PlanModel model = planning::modelFromSweep(data, "test");
-  EXPECT_EQ(model.variants.size(), planning::candidateCatalog().size());
+  EXPECT_EQ(model.variants.size(), acceptedFor(LightType::Spot).size());
   EXPECT_EQ(model.screen, 64u);
   EXPECT_EQ(model.map, 256u);
   const bool slope = planning::useSlopeBias(data.scenes[0].scenes.stats, rules);
-  for (const planning::Candidate& c : planning::candidateCatalog()) {
+  for (const planning::Candidate& c : acceptedFor(LightType::Spot)) {
     const std::string name = planning::sweepVariantName(c, slope);
     const sweep::Row* row = nullptr;
     for (const sweep::Row& r : rows.rows)
@@ -134,7 +153,8 @@ TEST(PlanConfirmation, TriesTheNextCandidateWhenTheFirstMeasuresSlow) {
   r.map = s.map;
   const auto verdicts = planning::featureVerdicts(scenes.stats, model.rules, r.scenes);
   std::vector<std::pair<double, std::string>> allowed;
-  for (const planning::Candidate& c : planning::candidateCatalog()) {
+  for (const planning::Candidate& c : acceptedFor(LightType::Spot)) {  // what the planner considers
+    if (!model.variants.count(c.name)) continue;
     bool ok = true;
     for (planning::Feature f : planning::kFeatures)
       if (f != planning::Feature::SlopeBias && c.has(f) && verdicts.at(f).ruledOut) ok = false;
@@ -145,7 +165,8 @@ TEST(PlanConfirmation, TriesTheNextCandidateWhenTheFirstMeasuresSlow) {
   const std::string fast = allowed[1].second;
   auto cacheWith = [&](double slowFactor) {
     std::map<std::string, planning::Measurement> cache;
-    for (const planning::Candidate& c : planning::candidateCatalog()) {
+    for (const planning::Candidate& c : acceptedFor(LightType::Spot)) {
+      if (!model.variants.count(c.name)) continue;
       planning::Measurement m;
       m.variant = c.name;
       const double ms = model.predictMs(c.name, r.map, r.screen) * (c.name == fast ? 1.0 : slowFactor);
@@ -177,7 +198,7 @@ TEST(CalibrationSweepCli, WritesTheSweepAndRefusesAMissingOne) {
                                              "' --scene two_planes --screen 64 --map 256 --samples 4 --runs 1");
   ASSERT_EQ(w.code, 0) << w.err;
   const sweep::SweepSpec spec = sweep::loadSweepSpec(file);
-  EXPECT_EQ(spec.filters.size(), planning::candidateCatalog().size() + 5);
+  EXPECT_EQ(spec.filters.size(), sweptVariants(LightType::Spot));
   ASSERT_EQ(spec.scenes.size(), 1u);
   EXPECT_EQ(spec.scenes[0].scene, "two_planes");
   EXPECT_EQ(spec.screens, std::vector<uint32_t>{64});
