@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -129,6 +131,52 @@ TEST(CalibrationSweep, ModelIsFittedFromTheSweepRows) {
             "intro\n<!-- plan report: begin (generated; do not edit by hand) -->\nTABLE\n"
             "<!-- plan report: end -->\noutro\n");
   EXPECT_EQ(planning::placeReport("no markers", "TABLE\n"), "TABLE\n");
+}
+
+// One calibration sweep per light type (spot into DIR, sun into DIR/sun, point into DIR/point),
+// each of the candidates the checker accepts for that light, joined as one set: the sun scene's
+// candidates include the cascaded ones, the point scene's no VSSM (E0450), and the report plans
+// each scene within its bound with a filter of its own light. Siblings: the spot sweep alone holds
+// no sun or point row, and the point scene's everything-on column is refused, not measured.
+TEST(CalibrationSweep, EveryLightTypeIsSweptAndJoined) {
+  const auto dir = test::freshTempDir("plan_calibration_lights");
+  planning::CalibrationRequest request = tinyRequest();
+  request.scenes = {"two_planes", "sun_two_planes", "point_room"};
+  request.map = 384;  // a point light's faces are cells of 128^2
+  const sweep::Results ran = planning::calibrationRows(request, dir, "");
+  EXPECT_TRUE(ran.skipped.empty()) << ran.skipped.front().message;
+  EXPECT_EQ(ran.rows.size(),
+            sweptVariants(LightType::Spot) + sweptVariants(LightType::Sun) + sweptVariants(LightType::Point));
+  EXPECT_TRUE(std::filesystem::exists(dir / "sun" / "results.json"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "point" / "results.json"));
+  EXPECT_EQ(planning::sweepRows(dir).rows.size(), ran.rows.size());  // --from-sweep reads all three
+  EXPECT_EQ(sweep::readResultsJson(dir / "results.json").rows.size(), sweptVariants(LightType::Spot));
+
+  const planning::PlanRules rules;
+  const planning::SweepData data = planning::joinSweep(context(), ran, dir, rules);
+  EXPECT_TRUE(data.warnings.empty()) << data.warnings.front();
+  ASSERT_EQ(data.scenes.size(), 3u);
+  std::map<std::string, const planning::SweepScene*> byScene;
+  for (const planning::SweepScene& sc : data.scenes) byScene[sc.label] = &sc;
+  ASSERT_EQ(byScene.count("sun_two_planes") + byScene.count("point_room"), 2u);
+  EXPECT_EQ(byScene["sun_two_planes"]->byName.size(), acceptedFor(LightType::Sun).size());
+  EXPECT_EQ(byScene["sun_two_planes"]->byName.count("pcss_poisson16_cascades4"), 1u);
+  EXPECT_EQ(byScene["point_room"]->byName.size(), acceptedFor(LightType::Point).size());
+  EXPECT_EQ(byScene["point_room"]->byName.count(planning::everythingOn().name), 0u);
+  EXPECT_EQ(byScene["two_planes"]->byName.count("pcss_poisson16_cascades4"), 0u);
+
+  const planning::PlanModel model = planning::modelFromSweep(data, "test");
+  const auto report = planning::planReport(context(), data, model);
+  ASSERT_EQ(report.size(), 3u);
+  for (const planning::ReportRow& r : report) {
+    EXPECT_TRUE(r.planError.empty()) << r.scene << ": " << r.planError;
+    EXPECT_LE(r.plan.worstRmse, r.bound) << r.scene;
+    EXPECT_EQ(r.everything.variant.empty(), r.scene == "point_room") << r.scene;
+  }
+  const std::string table = planning::formatReport(report, data, "test");
+  EXPECT_NE(table.find("| point_room |"), std::string::npos) << table;
+  EXPECT_NE(table.find("refused (E0450)"), std::string::npos) << table;
+  EXPECT_NE(table.find("(of the 2 where everything on compiles)"), std::string::npos) << table;
 }
 
 // The confirmation tries the next candidates while the model says they may be faster than the
