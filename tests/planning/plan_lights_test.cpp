@@ -152,5 +152,22 @@ TEST(PlanLights, CascadesOfferedWhereTheViewDepthRangeIsWide) {
                   .ruledOut);
 }
 
+// plan on sun_outdoor_long keeps cascades, and the comment names the statistic: at these settings
+// (64^2 / 384^2 / 8^2) pcf_grid3_cascades4 measured 0.165, every one-map candidate >= 0.42 (hard
+// 0.51, pcf_grid3 0.46, pcf_grid5 0.49, layered_vsm4 0.42). Sibling: on sun_two_planes the plan drops them with
+// its statistic.
+TEST(PlanLights, LongStreetPlansCascades) {
+  const planning::PlanResult p = planning::plan(context(), request({"sun_outdoor_long"}, 0.2), planning::loadModel());
+  EXPECT_LE(p.measured.worstRmse, 0.2);
+  EXPECT_EQ(p.chosen.cascades, 4) << p.chosen.name;
+  EXPECT_NE(p.text.find("# cascades kept: receivers' camera depth p99 / p01 = "), std::string::npos) << p.text;
+  EXPECT_NE(p.text.find("cascades   practical(count: 4"), std::string::npos) << p.text;
+  const driver::Result compiled = driver::compileSource(p.text, "planned.shadow");
+  EXPECT_TRUE(compiled.ok) << compiled.log;
+  const planning::PlanResult q = planning::plan(context(), request({"sun_two_planes"}, 0.06), planning::loadModel());
+  EXPECT_EQ(q.chosen.cascades, 0) << q.chosen.name;
+  EXPECT_NE(q.text.find("# cascades dropped: receivers' camera depth p99 / p01 = "), std::string::npos) << q.text;
+}
+
 }  // namespace
 }  // namespace shadowc
