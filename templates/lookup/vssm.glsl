@@ -150,7 +150,21 @@ void shadowc_qtLeafBox(vec4 box) {
 bool shadowc_qtVisit(ivec3 node) { return shadowc_qtClassifyBox(shadowc_qtBox(node)) == 1; }
 void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
 
-// Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision. `nonPlanarOnly`:
+// Algorithm 2 L9-L11 at the root, sec. 5.2's "reasonable acceleration strategy": a region whose
+// mean lies behind d with a variance under the Threshold is fully lit, and none of its
+// sub-kernels is read (4 SAT reads instead of the whole walk for most lit receivers; the
+// quadtree walk does the same at its root). True when it accepted the root as lit.
+bool shadowc_rootLit(vec4 box) {
+  float area = shadowc_boxArea(box);
+  if (!(area > 0.0)) return false;
+  vec4 m = shadowc_boxMoments(box, 0);
+  if (!(m.x >= shadowc_vD && m.y - m.x * m.x < SHADOWC_LIT_THRESHOLD)) return false;
+  shadowc_aLitArea += area;
+  return true;
+}
+
+// Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision. With `always` a fully lit
+// root is accepted first (shadowc_rootLit). `nonPlanarOnly`:
 // Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
 // the den x den walk only when it is non-planar (classify accumulates nothing then).
 // With whole-texel corners neighbouring sub-kernels share SAT corners: the walk goes row by row
@@ -159,7 +173,14 @@ void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
 // work a pixel needs). The sums are the same four corners in the same order as sat.glsl's
 // shadowc_summedMean, so every box mean is bit-identical to a separate box query.
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
-  if (nonPlanarOnly && den > 1 && shadowc_qtClassifyBox(shadowc_subBox(ivec3(0, 0, 1))) == 0) return;
+  if (den > 1) {
+    vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
+    if (nonPlanarOnly) {
+      if (shadowc_qtClassifyBox(whole) == 0) return;
+    } else if (shadowc_rootLit(whole)) {
+      return;
+    }
+  }
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;

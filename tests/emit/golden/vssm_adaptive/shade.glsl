@@ -400,9 +400,25 @@ void shadowc_qtLeafBox(vec4 box){
 #line 150
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
-#line 161
+#line 157
+bool shadowc_rootLit(vec4 box){
+  float area = shadowc_boxArea(box);
+  if(!(area > 0.0))return false;
+  vec4 m = shadowc_boxMoments(box, 0);
+  if(!(m . x >= shadowc_vD && m . y - m . x * m . x < 0.0001))return false;
+  shadowc_aLitArea += area;
+  return true;
+}
+#line 175
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
-  if(nonPlanarOnly && den > 1 && shadowc_qtClassifyBox(shadowc_subBox(ivec3(0, 0, 1)))== 0)return;
+  if(den > 1){
+    vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
+    if(nonPlanarOnly){
+      if(shadowc_qtClassifyBox(whole)== 0)return;
+    } else if(shadowc_rootLit(whole)){
+      return;
+    }
+  }
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
@@ -426,18 +442,18 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       hi0 = hi1;
     }
   }
-#line 190
+#line 211
 }
-#line 199
+#line 220
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 202
+#line 223
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 211
+#line 232
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
   for(int step = 0;step < 85 && n . z > 0;++ step){
@@ -452,12 +468,12 @@ void shadowc_qtWalk(int height){
     n = shadowc_qtNextNode(n);
   }
 }
-#line 228
+#line 249
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 237
+#line 258
   shadowc_uniformWalk(5, 0 != 0);
-#line 242
+#line 263
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -474,12 +490,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 260
+#line 281
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 266
+#line 287
   shadowc_qtWalk(3);
-#line 273
+#line 294
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -493,20 +509,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 293
+#line 314
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 301
+#line 322
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 310
+#line 331
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
