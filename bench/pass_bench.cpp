@@ -8,10 +8,10 @@
 // median of the timed runs); the copies are a hand-built manifest run the same way.
 //
 // Usage: pass_bench [runs] [sample-substrings, '|'-separated] [map sizes, comma separated] [filter folders, comma
-// separated]
-//   defaults: 5 runs after 2 warm-ups, every sample, 512,1024,2048, samples/filters; screen
-//   256^2, two_planes. bench/filters holds inputs that are no samples (the mixed scheme, the
-//   unfused moments + SAT reference).
+// separated] [scene] [screen]
+//   defaults: 5 runs after 2 warm-ups, every sample, 512,1024,2048, samples/filters, two_planes,
+//   screen 256^2 (the scene: a built-in name or a .json path, as `shadowc validate --scene`). bench/filters holds
+//   inputs that are no samples (the mixed scheme, the unfused moments + SAT reference).
 // Run with MESA_SHADER_CACHE_DISABLE=true so that runs are comparable.
 #include <fmt/core.h>
 
@@ -35,7 +35,6 @@ using namespace shadowc;
 namespace {
 
 constexpr int kWarmup = 2;
-constexpr uint32_t kScreen = 256;
 
 struct CopyFormat {
   ImageFormat format;
@@ -126,13 +125,15 @@ std::optional<ImageFormat> writtenFormat(const Manifest& m, const Pass& p) {
 }
 
 // Texel fetches per shaded pixel, worst case, from the spec (what the lookup templates read):
-// a SAT box is 4 texel reads of the SAT (sat.glsl), a PCF tap 1 depth read (bilinear = 4 texels,
-// counted as 1 gather-like sample here), a min-max early out 4 reads of one pyramid level.
+// a SAT box is 4 texel reads of the SAT (sat.glsl; 16 with bilinear corners), a uniform m x m walk
+// with whole-texel corners shares corners, 2 m (m + 1) reads (vssm.glsl shadowc_uniformWalk), plus
+// the root's 4 first with `subdivide: nonplanar`; a quadtree counts every node, a PCF leaf n^2
+// reads, a PCF tap 1 depth read (bilinear = 4 texels, counted as 1 gather-like sample here), a
+// min-max early out 4 reads of one pyramid level.
 std::string fetchesPerPixel(const FilterSpec& s) {
   const bool moments = s.representation == Representation::Moments;
   const bool sat = moments && s.storage.sat != SatKind::None;
   long long n = s.earlyOutMinMax ? 4 : 0;
-  std::string how;
   if (!moments) {
     const long long pcf =
         s.sampling.pattern == PcfPattern::Poisson ? s.sampling.taps : 1LL * s.sampling.gridN * s.sampling.gridN;
@@ -140,22 +141,28 @@ std::string fetchesPerPixel(const FilterSpec& s) {
     return fmt::format("{} ({} search + {} pcf{})", n + pcf + search, search, pcf, n ? " + 4 minmax" : "");
   }
   if (!sat) return fmt::format("{} (moments texels{})", n + s.moments.layers, n ? " + 4 minmax" : "");
-  auto boxes = [](Subdivision sub, int m, int h) -> long long {
-    if (sub == Subdivision::Uniform) return 1LL * m * m;
-    if (sub == Subdivision::Quadtree) return ((1LL << (2 * (h + 1))) - 1) / 3;  // every node, worst case
-    return 1;
+  const long long perBox = s.storage.fractionalCorners ? 16 : 4;
+  auto reads = [&](Subdivision sub, int m, int h, bool nonPlanarOnly) -> long long {
+    if (sub == Subdivision::Uniform && m > 1) {
+      const long long walk = s.storage.fractionalCorners ? perBox * m * m : 2LL * m * (m + 1);
+      return walk + (nonPlanarOnly ? perBox : 0);
+    }
+    if (sub == Subdivision::Quadtree) return perBox * (((1LL << (2 * (h + 1))) - 1) / 3);  // every node
+    return perBox;
   };
-  const long long blocker = s.blocker.kind == BlockerKind::Moments
-                                ? boxes(s.blocker.subdivision, s.blocker.uniformM, s.blocker.quadtreeHeight)
-                                : 0;
-  const long long kernel = boxes(s.kernel.subdivision, s.kernel.uniformN, s.kernel.quadtreeHeight);
+  const long long blocker =
+      s.blocker.kind == BlockerKind::Moments
+          ? reads(s.blocker.subdivision, s.blocker.uniformM, s.blocker.quadtreeHeight, s.blocker.uniformNonPlanarOnly)
+          : 0;
+  const long long kernel =
+      reads(s.kernel.subdivision, s.kernel.uniformN, s.kernel.quadtreeHeight, s.kernel.uniformNonPlanarOnly);
   const long long leaves = s.kernel.subdivision == Subdivision::Quadtree  ? (1LL << (2 * s.kernel.quadtreeHeight))
                            : s.kernel.subdivision == Subdivision::Uniform ? 1LL * s.kernel.uniformN * s.kernel.uniformN
                                                                           : 1;
   const long long fallback = s.fallback.pcf ? leaves * s.fallback.n * s.fallback.n : 0;
   const long long contact = s.contact.enabled ? 1LL * s.contact.n * s.contact.n : 0;
-  const long long total = n + 4 * (blocker + kernel) + fallback;  // contact replaces the kernel walk
-  return fmt::format("{} (4x{} blocker + 4x{} kernel boxes{}{}{})", total, blocker, kernel,
+  const long long total = n + blocker + kernel + fallback;  // contact replaces the kernel walk
+  return fmt::format("{} ({} blocker + {} kernel SAT reads{}{}{})", total, blocker, kernel,
                      fallback ? fmt::format(" + {} fallback", fallback) : "",
                      contact ? fmt::format("; contact path {}", contact) : "", n ? " + 4 minmax" : "");
 }
@@ -191,6 +198,8 @@ int main(int argc, char** argv) try {
   std::stringstream folderList(argc > 4 ? argv[4] : "");
   for (std::string item; std::getline(folderList, item, ',');) folders.emplace_back(item);
   if (folders.empty()) folders.push_back(fs::path(SHADOWC_SOURCE_DIR) / "samples" / "filters");
+  const std::string sceneName = argc > 5 ? argv[5] : "two_planes";
+  const uint32_t screen = argc > 6 ? static_cast<uint32_t>(std::stoul(argv[6])) : 256;
 
   std::vector<driver::Artifact> filters;
   for (const fs::path& folder : folders)
@@ -207,8 +216,8 @@ int main(int argc, char** argv) try {
   const CompiledPasses copies = copyPasses();
 
   rt::VulkanContext ctx;
-  fmt::print("device: {}; screen {}^2, two_planes; {} warm-up + {} timed runs, medians (ms)\n\n", ctx.describe(),
-             kScreen, kWarmup, runs);
+  fmt::print("device: {}; screen {}^2, {}; {} warm-up + {} timed runs, medians (ms)\n\n", ctx.describe(), screen,
+             sceneName, kWarmup, runs);
   const rt::RunOptions options{kWarmup, runs, {}};
 
   // Per map size: the copy anchors, then every filter's passes.
@@ -228,12 +237,13 @@ int main(int argc, char** argv) try {
 
   for (uint32_t map : sizes) {
     rt::SceneSettings settings;
-    settings.screen = kScreen;
+    settings.scene = sceneName;
+    settings.screen = screen;
     settings.map = map;
     const auto scene = rt::prepareScene(ctx, settings);
     rt::RunInputs copyIn;
     copyIn.mapSize = map;
-    copyIn.width = copyIn.height = kScreen;
+    copyIn.width = copyIn.height = screen;
     copyIn.frame = scene->setup.frame;
     const rt::RunOutputs c = rt::runPasses(ctx, copies, copyIn, options);
     for (size_t i = 0; i < copyFormats().size(); ++i)
@@ -309,10 +319,10 @@ int main(int argc, char** argv) try {
   fmt::print(
       "\n### Shade pass per pixel ({}² pixels; fetches per pixel: worst case from the spec)\n\n| filter | fetches / "
       "pixel |",
-      kScreen);
+      screen);
   for (uint32_t map : sizes) fmt::print(" {}² map µs/pixel | RMSE |", map);
   fmt::print("\n|---|---|{}\n", repeat("---:|---:|", sizes.size()));
-  const double pixels = double(kScreen) * kScreen;
+  const double pixels = double(screen) * screen;
   for (const Shade& s : shades) {
     fmt::print("| {} | {} |", s.filter, s.fetches);
     for (uint32_t map : sizes)

@@ -39,23 +39,31 @@ vec4 shadowc_summedCorner(int x, int y, int layer) {
 }
 #endif
 
-// Mean of the moments over the inclusive texel rectangle (x0, y0, x1, y1).
-vec4 shadowc_summedMean(ivec4 rect, int layer) {
-  float area = float((rect.z - rect.x + 1) * (rect.w - rect.y + 1));
-  area = max(area, 1.0);
+// The type of a SAT corner / box sum, and a box sum over `area` texels turned into mean moments
+// (one definition for every caller: vssm.glsl's shared-corner walk sums corners itself).
 #if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
-  uvec4 sum = shadowc_summedCorner(rect.z, rect.w, layer) - shadowc_summedCorner(rect.x - 1, rect.w, layer) -
-              shadowc_summedCorner(rect.z, rect.y - 1, layer) + shadowc_summedCorner(rect.x - 1, rect.y - 1, layer);
-  return vec4(sum) / (65536.0 * area);
+#define shadowc_SatSum uvec4
 #else
-  vec4 sum = shadowc_summedCorner(rect.z, rect.w, layer) - shadowc_summedCorner(rect.x - 1, rect.w, layer) -
-             shadowc_summedCorner(rect.z, rect.y - 1, layer) + shadowc_summedCorner(rect.x - 1, rect.y - 1, layer);
-#if SHADOWC_SAT_KIND == SHADOWC_SAT_FP32_CENTERED
+#define shadowc_SatSum vec4
+#endif
+vec4 shadowc_satMeanOfSum(shadowc_SatSum sum, float area) {
+#if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
+  return vec4(sum) / (65536.0 * area);
+#elif SHADOWC_SAT_KIND == SHADOWC_SAT_FP32_CENTERED
   return sum / area + 0.5;
 #else
   return sum / area;
 #endif
-#endif
+}
+
+// Mean of the moments over the inclusive texel rectangle (x0, y0, x1, y1).
+vec4 shadowc_summedMean(ivec4 rect, int layer) {
+  float area = float((rect.z - rect.x + 1) * (rect.w - rect.y + 1));
+  area = max(area, 1.0);
+  shadowc_SatSum sum = shadowc_summedCorner(rect.z, rect.w, layer) - shadowc_summedCorner(rect.x - 1, rect.w, layer) -
+                       shadowc_summedCorner(rect.z, rect.y - 1, layer) +
+                       shadowc_summedCorner(rect.x - 1, rect.y - 1, layer);
+  return shadowc_satMeanOfSum(sum, area);
 }
 
 #if SHADOWC_SAT_FRACTIONAL

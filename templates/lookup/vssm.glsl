@@ -56,7 +56,8 @@ void shadowc_vssmBegin(vec4 root, float d) {
   shadowc_aPcfDepth = 0.0;
 }
 
-// Sub-kernel (ix, iy) of a den x den partition of the root kernel, as a box.
+// Sub-kernel (ix, iy) of a den x den partition of the root kernel, as a box (uniform walk: den
+// is a compile-time constant there, so the divisions fold to multiplications).
 vec4 shadowc_subBox(ivec3 node) {
 #if SHADOWC_SAT_FRACTIONAL
   vec2 size = shadowc_vRoot.zw - shadowc_vRoot.xy;
@@ -69,14 +70,26 @@ vec4 shadowc_subBox(ivec3 node) {
 #endif
 }
 
+// The same box for a quadtree node (den = 2^level, dynamic in the walk): with whole-texel corners
+// the partition is a shift (ix * W >= 0, so it equals the division), because lavapipe has no
+// vector integer divide and splits each one into a scalar divide per lane (issue 10: nothing per
+// node that could be cheaper).
+vec4 shadowc_qtBox(ivec3 node) {
+#if SHADOWC_SAT_FRACTIONAL
+  return shadowc_subBox(node);
+#else
+  ivec2 root = ivec2(shadowc_vRoot.xy);
+  ivec2 size = ivec2(shadowc_vRoot.zw) - root;
+  int s = findLSB(node.z);
+  return vec4(root + ((node.xy * size) >> s), root + (((node.xy + 1) * size) >> s));
+#endif
+}
+
 float shadowc_boxArea(vec4 box) { return (box.z - box.x) * (box.w - box.y); }
 
-// Algorithm 2 L6-L19 for one sub-kernel: 0 = accepted (lit or normal), 1 = non-planar.
-int shadowc_qtClassify(ivec3 node) {
-  vec4 box = shadowc_subBox(node);
-  float area = shadowc_boxArea(box);
-  if (!(area > 0.0)) return 0;
-  vec4 m = shadowc_boxMoments(box, 0);
+// Algorithm 2 L9-L19 for one sub-kernel of `area` texels (> 0) with mean moments m:
+// 0 = accepted (lit or normal), 1 = non-planar.
+int shadowc_qtAccept(vec4 m, float area) {
   float variance = m.y - m.x * m.x;
   if (m.x >= shadowc_vD && variance < SHADOWC_LIT_THRESHOLD) {
     shadowc_aLitArea += area;
@@ -91,11 +104,16 @@ int shadowc_qtClassify(ivec3 node) {
   return 1;
 }
 
-// A non-planar leaf (Algorithm 2 L22-L26).
-void shadowc_qtResolveLeaf(ivec3 node) {
-  vec4 box = shadowc_subBox(node);
+// Algorithm 2 L6-L19 for one sub-kernel box: 0 = accepted (lit or normal, or empty), 1 = non-planar.
+int shadowc_qtClassifyBox(vec4 box) {
   float area = shadowc_boxArea(box);
-  if (!(area > 0.0)) return;
+  if (!(area > 0.0)) return 0;
+  return shadowc_qtAccept(shadowc_boxMoments(box, 0), area);
+}
+
+// A non-planar leaf (Algorithm 2 L22-L26); `box` is the one its classification read (area > 0).
+void shadowc_qtResolveLeaf(vec4 box) {
+  float area = shadowc_boxArea(box);
 #if SHADOWC_FALLBACK_PCF
   const int n = SHADOWC_FALLBACK_N;
   vec2 size = box.zw - box.xy;
@@ -123,19 +141,73 @@ void shadowc_qtResolveLeaf(ivec3 node) {
 #endif
 }
 
-// Callbacks of the generated unrolled traversal (quadtree_tables.cpp).
-bool shadowc_qtVisit(ivec3 node) { return shadowc_qtClassify(node) == 1; }
-void shadowc_qtLeaf(ivec3 node) {
-  if (shadowc_qtClassify(node) == 1) shadowc_qtResolveLeaf(node);
+// Classify a leaf and resolve it when it is non-planar (its box is computed once).
+void shadowc_qtLeafBox(vec4 box) {
+  if (shadowc_qtClassifyBox(box) == 1) shadowc_qtResolveLeaf(box);
 }
 
-// Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision. `nonPlanarOnly`:
+// Callbacks of the generated unrolled traversal (quadtree_tables.cpp).
+bool shadowc_qtVisit(ivec3 node) { return shadowc_qtClassifyBox(shadowc_qtBox(node)) == 1; }
+void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
+
+// Algorithm 2 L9-L11 at the root, sec. 5.2's "reasonable acceleration strategy": a region whose
+// mean lies behind d with a variance under the Threshold is fully lit, and none of its
+// sub-kernels is read (4 SAT reads instead of the whole walk for most lit receivers; the
+// quadtree walk does the same at its root). True when it accepted the root as lit.
+bool shadowc_rootLit(vec4 box) {
+  float area = shadowc_boxArea(box);
+  if (!(area > 0.0)) return false;
+  vec4 m = shadowc_boxMoments(box, 0);
+  if (!(m.x >= shadowc_vD && m.y - m.x * m.x < SHADOWC_LIT_THRESHOLD)) return false;
+  shadowc_aLitArea += area;
+  return true;
+}
+
+// Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision. With `always` a fully lit
+// root is accepted first (shadowc_rootLit). `nonPlanarOnly`:
 // Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
 // the den x den walk only when it is non-planar (classify accumulates nothing then).
+// With whole-texel corners neighbouring sub-kernels share SAT corners: the walk goes row by row
+// and carries the last column's two corners, so a row of den boxes reads 2 (den + 1) corners
+// instead of 4 den (den = 5: 60 texel reads instead of 100; issue 10, lookups that do only the
+// work a pixel needs). The sums are the same four corners in the same order as sat.glsl's
+// shadowc_summedMean, so every box mean is bit-identical to a separate box query.
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
-  if (nonPlanarOnly && den > 1 && shadowc_qtClassify(ivec3(0, 0, 1)) == 0) return;
+  if (den > 1) {
+    vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
+    if (nonPlanarOnly) {
+      if (shadowc_qtClassifyBox(whole) == 0) return;
+    } else if (shadowc_rootLit(whole)) {
+      return;
+    }
+  }
+#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
+  ivec2 root = ivec2(shadowc_vRoot.xy);
+  ivec2 size = ivec2(shadowc_vRoot.zw) - root;
+  for (int j = 0; j < den; ++j) {
+    int y0 = root.y + (j * size.y) / den;
+    int y1 = root.y + ((j + 1) * size.y) / den;
+    if (y1 <= y0) continue;  // an empty row of sub-kernels (narrower than a texel): area 0
+    int x0 = root.x;
+    shadowc_SatSum lo0 = shadowc_summedCorner(x0 - 1, y0 - 1, 0);
+    shadowc_SatSum hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
+    for (int i = 0; i < den; ++i) {
+      int x1 = root.x + ((i + 1) * size.x) / den;
+      if (x1 <= x0) continue;  // an empty sub-kernel: its corners are the ones carried
+      shadowc_SatSum lo1 = shadowc_summedCorner(x1 - 1, y0 - 1, 0);
+      shadowc_SatSum hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
+      float area = float((x1 - x0) * (y1 - y0));
+      vec4 box = vec4(x0, y0, x1, y1);
+      if (shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - lo1 + lo0, area), area) == 1) shadowc_qtResolveLeaf(box);
+      x0 = x1;
+      lo0 = lo1;
+      hi0 = hi1;
+    }
+  }
+#else
   for (int j = 0; j < den; ++j)
-    for (int i = 0; i < den; ++i) shadowc_qtLeaf(ivec3(i, j, den));
+    for (int i = 0; i < den; ++i) shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
+#endif
 }
 
 #if defined(SHADOWC_QT_NODES)
@@ -160,12 +232,13 @@ ivec3 shadowc_qtNextNode(ivec3 n) {
 void shadowc_qtWalk(int height) {
   ivec3 n = ivec3(0, 0, 1);
   for (int step = 0; step < SHADOWC_QT_NODES && n.z > 0; ++step) {
-    if (shadowc_qtClassify(n) == 1) {
+    vec4 box = shadowc_qtBox(n);
+    if (shadowc_qtClassifyBox(box) == 1) {
       if (n.z < (1 << height)) {
         n = ivec3(2 * n.xy, 2 * n.z);  // Child: the first of the four
         continue;
       }
-      shadowc_qtResolveLeaf(n);
+      shadowc_qtResolveLeaf(box);
     }
     n = shadowc_qtNextNode(n);
   }

@@ -228,6 +228,14 @@ class Evaluator {
     }
     return 1;
   }
+  bool rootLit(const Box& r, double d, Acc& a) const {
+    const double area = Evaluator::area(r);
+    if (!(area > 0)) return false;
+    const auto m = boxMoments(r, 0);
+    if (!(m[0] >= d && m[1] - m[0] * m[0] < s_.kernel.litThreshold)) return false;
+    a.lit += area;
+    return true;
+  }
   void resolveLeaf(const Box& r, double d, Acc& a) const {
     const double area = Evaluator::area(r);
     if (!(area > 0)) return;
@@ -268,8 +276,12 @@ class Evaluator {
       return;
     }
     const int den = sub == Subdivision::Uniform ? param : 1;
-    // vssm.glsl shadowc_uniformWalk: Algorithm 1 subdivides only a non-planar root.
-    if (sub == Subdivision::Uniform && nonPlanarOnly && den > 1 && classify(subRect(root, 0, 0, 1), d, a) != 1) return;
+    // vssm.glsl shadowc_uniformWalk: Algorithm 1 subdivides only a non-planar root; `always`
+    // still accepts a fully lit root first (Algorithm 2 L9-L11, shadowc_rootLit).
+    if (sub == Subdivision::Uniform && den > 1) {
+      const auto r = subRect(root, 0, 0, 1);
+      if (nonPlanarOnly ? classify(r, d, a) != 1 : rootLit(r, d, a)) return;
+    }
     for (int j = 0; j < den; ++j)
       for (int i = 0; i < den; ++i) {
         const auto r = subRect(root, i, j, den);

@@ -204,15 +204,20 @@ uvec4 shadowc_summedCorner(int x, int y, int layer){
   if(x < 0 || y < 0)return uvec4(0u);
   return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
 }
-#line 43
+#line 49
+vec4 shadowc_satMeanOfSum(uvec4 sum, float area){
+
+  return vec4(sum)/(65536.0 * area);
+#line 57
+}
+#line 60
 vec4 shadowc_summedMean(ivec4 rect, int layer){
   float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
   area = max(area, 1.0);
-
-  uvec4 sum = shadowc_summedCorner(rect . z, rect . w, layer)- shadowc_summedCorner(rect . x - 1, rect . w, layer)-
-              shadowc_summedCorner(rect . z, rect . y - 1, layer)+ shadowc_summedCorner(rect . x - 1, rect . y - 1, layer);
-  return vec4(sum)/(65536.0 * area);
-#line 59
+               uvec4 sum = shadowc_summedCorner(rect . z, rect . w, layer)- shadowc_summedCorner(rect . x - 1, rect . w, layer)-
+                       shadowc_summedCorner(rect . z, rect . y - 1, layer)+
+                       shadowc_summedCorner(rect . x - 1, rect . y - 1, layer);
+  return shadowc_satMeanOfSum(sum, area);
 }
 #line 43 "lookup/shadowc_lookup.glsl"
 
@@ -323,22 +328,27 @@ void shadowc_vssmBegin(vec4 root, float d){
   shadowc_aPcfOcc = 0.0;
   shadowc_aPcfDepth = 0.0;
 }
-#line 60
+#line 61
 vec4 shadowc_subBox(ivec3 node){
-#line 66
+#line 67
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
   return vec4(root +(node . xy * size)/ node . z, root +((node . xy + 1)* size)/ node . z);
 
 }
+#line 77
+vec4 shadowc_qtBox(ivec3 node){
+#line 81
+  ivec2 root = ivec2(shadowc_vRoot . xy);
+  ivec2 size = ivec2(shadowc_vRoot . zw)- root;
+  int s = findLSB(node . z);
+  return vec4(root +((node . xy * size)>> s), root +(((node . xy + 1)* size)>> s));
+
+}
 
 float shadowc_boxArea(vec4 box){ return(box . z - box . x)*(box . w - box . y);}
-#line 75
-int shadowc_qtClassify(ivec3 node){
-  vec4 box = shadowc_subBox(node);
-  float area = shadowc_boxArea(box);
-  if(!(area > 0.0))return 0;
-  vec4 m = shadowc_boxMoments(box, 0);
+#line 92
+int shadowc_qtAccept(vec4 m, float area){
   float variance = m . y - m . x * m . x;
   if(m . x >= shadowc_vD && variance < 0.0001){
     shadowc_aLitArea += area;
@@ -352,11 +362,15 @@ int shadowc_qtClassify(ivec3 node){
   }
   return 1;
 }
-#line 95
-void shadowc_qtResolveLeaf(ivec3 node){
-  vec4 box = shadowc_subBox(node);
+#line 108
+int shadowc_qtClassifyBox(vec4 box){
   float area = shadowc_boxArea(box);
-  if(!(area > 0.0))return;
+  if(!(area > 0.0))return 0;
+  return shadowc_qtAccept(shadowc_boxMoments(box, 0), area);
+}
+#line 115
+void shadowc_qtResolveLeaf(vec4 box){
+  float area = shadowc_boxArea(box);
 
   const int n = 2;
   vec2 size = box . zw - box . xy;
@@ -364,7 +378,7 @@ void shadowc_qtResolveLeaf(ivec3 node){
   float depthSum = 0.0;
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i){
-#line 109
+#line 127
       ivec2 t = ivec2(box . xy)+ ivec2(floor((vec2(i, j)+ 0.5)* size / float(n)));
 
       float z = shadowc_depthAt(t);
@@ -377,48 +391,89 @@ void shadowc_qtResolveLeaf(ivec3 node){
   shadowc_aPcfArea += area;
   shadowc_aPcfOcc += occluded * scale;
   shadowc_aPcfDepth += depthSum * scale;
-#line 124
+#line 142
 }
-#line 127
-bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassify(node)== 1;}
-void shadowc_qtLeaf(ivec3 node){
-  if(shadowc_qtClassify(node)== 1)shadowc_qtResolveLeaf(node);
+#line 145
+void shadowc_qtLeafBox(vec4 box){
+  if(shadowc_qtClassifyBox(box)== 1)shadowc_qtResolveLeaf(box);
 }
-#line 135
+#line 150
+bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
+void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
+#line 157
+bool shadowc_rootLit(vec4 box){
+  float area = shadowc_boxArea(box);
+  if(!(area > 0.0))return false;
+  vec4 m = shadowc_boxMoments(box, 0);
+  if(!(m . x >= shadowc_vD && m . y - m . x * m . x < 0.0001))return false;
+  shadowc_aLitArea += area;
+  return true;
+}
+#line 175
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
-  if(nonPlanarOnly && den > 1 && shadowc_qtClassify(ivec3(0, 0, 1))== 0)return;
-  for(int j = 0;j < den;++ j)
-    for(int i = 0;i < den;++ i)shadowc_qtLeaf(ivec3(i, j, den));
+  if(den > 1){
+    vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
+    if(nonPlanarOnly){
+      if(shadowc_qtClassifyBox(whole)== 0)return;
+    } else if(shadowc_rootLit(whole)){
+      return;
+    }
+  }
+
+  ivec2 root = ivec2(shadowc_vRoot . xy);
+  ivec2 size = ivec2(shadowc_vRoot . zw)- root;
+  for(int j = 0;j < den;++ j){
+    int y0 = root . y +(j * size . y)/ den;
+    int y1 = root . y +((j + 1)* size . y)/ den;
+    if(y1 <= y0)continue;
+    int x0 = root . x;
+                 uvec4 lo0 = shadowc_summedCorner(x0 - 1, y0 - 1, 0);
+                 uvec4 hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
+    for(int i = 0;i < den;++ i){
+      int x1 = root . x +((i + 1)* size . x)/ den;
+      if(x1 <= x0)continue;
+                   uvec4 lo1 = shadowc_summedCorner(x1 - 1, y0 - 1, 0);
+                   uvec4 hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
+      float area = float((x1 - x0)*(y1 - y0));
+      vec4 box = vec4(x0, y0, x1, y1);
+      if(shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - lo1 + lo0, area), area)== 1)shadowc_qtResolveLeaf(box);
+      x0 = x1;
+      lo0 = lo1;
+      hi0 = hi1;
+    }
+  }
+#line 211
 }
-#line 148
+#line 220
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 151
+#line 223
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 160
+#line 232
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
   for(int step = 0;step < 85 && n . z > 0;++ step){
-    if(shadowc_qtClassify(n)== 1){
+    vec4 box = shadowc_qtBox(n);
+    if(shadowc_qtClassifyBox(box)== 1){
       if(n . z <(1 << height)){
         n = ivec3(2 * n . xy, 2 * n . z);
         continue;
       }
-      shadowc_qtResolveLeaf(n);
+      shadowc_qtResolveLeaf(box);
     }
     n = shadowc_qtNextNode(n);
   }
 }
-#line 176
+#line 249
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 185
+#line 258
   shadowc_uniformWalk(5, 0 != 0);
-#line 190
+#line 263
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -435,12 +490,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 208
+#line 281
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 214
+#line 287
   shadowc_qtWalk(3);
-#line 221
+#line 294
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -454,20 +509,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 241
+#line 314
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 249
+#line 322
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 258
+#line 331
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
