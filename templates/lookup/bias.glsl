@@ -91,15 +91,8 @@ float shadowc_tapDepth(ivec2 t, float d) { return d + dot(shadowc_rpGradient, ve
 // acne 0.52 / 0.14 / 0.18 / 1.04 % -> 0.38 / 0.07 / 0.21 / 0.90 %, RMSE 0.139 / 0.106 / 0.130 /
 // 0.092 -> 0.139 / 0.106 / 0.128 / 0.088. VSSM's PCF leaves keep the full plane: their occluded
 // fraction also weighs the blocker estimate (vssm.glsl), and there the clamp raised engine acne
-// 0.74 -> 0.98 %. Point lights keep it too: in the cube atlas the clamp made PCSS near the face
-// seams worse (point_room penumbra band 0.116 -> 0.142 against 0.104 -> 0.090 elsewhere, the
-// seam test's bound broken); why is not yet known (clamping at the receiver's depth before the
-// normal offset instead of d did not change it).
-#ifdef SHADOWC_LIGHT_CUBE
-#define SHADOWC_OCCLUDER_DEPTH(t, d) shadowc_tapDepth(t, d)
-#else
+// 0.74 -> 0.98 %.
 #define SHADOWC_OCCLUDER_DEPTH(t, d) min(d, shadowc_tapDepth(t, d))
-#endif
 
 // Lowest and highest offset of the plane over the texel centres of an inclusive rectangle (the
 // min-max early out must hold for every tap in it).

@@ -145,7 +145,7 @@ void shadowc_receiverPlaneBegin(vec3 worldPos, vec3 worldNormal, vec2 texel){
 }
 #line 83
 float shadowc_tapDepth(ivec2 t, float d){ return d + dot(shadowc_rpGradient, vec2(t)+ 0.5 - shadowc_rpCentre);}
-#line 106
+#line 99
 vec2 shadowc_receiverPlaneRange(ivec4 rect){
   vec2 a = shadowc_rpGradient *(vec2(rect . xy)+ 0.5 - shadowc_rpCentre);
   vec2 b = shadowc_rpGradient *(vec2(rect . zw)+ 0.5 - shadowc_rpCentre);
