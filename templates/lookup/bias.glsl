@@ -82,17 +82,6 @@ void shadowc_receiverPlaneBegin(vec3 worldPos, vec3 worldNormal, vec2 texel) {
 // where the light-depth pass rasterized the texel's depth.
 float shadowc_tapDepth(ivec2 t, float d) { return d + dot(shadowc_rpGradient, vec2(t) + 0.5 - shadowc_rpCentre); }
 #define SHADOWC_TAP_DEPTH(t, d) shadowc_tapDepth(t, d)
-// PCF and PCSS taps: the plane, but never deeper than the receiver. Where the plane recedes from
-// the light it only has to keep the receiver's own surface from occluding, and that surface lies
-// behind d there anyway; raising the threshold above d made texels farther from the light than
-// the receiver count as occluders, which nothing behind a point can be (an edge-on face's plane,
-// slope up to max_slope, swept up neighbouring parts: the engine's fins, the duck's terminators).
-// Measured (256^2, 1024^2 map, 16^2 reference) for pcss_poisson on duck / mesh / spider / engine:
-// acne 0.52 / 0.14 / 0.18 / 1.04 % -> 0.38 / 0.07 / 0.21 / 0.90 %, RMSE 0.139 / 0.106 / 0.130 /
-// 0.092 -> 0.139 / 0.106 / 0.128 / 0.088. VSSM's PCF leaves keep the full plane: their occluded
-// fraction also weighs the blocker estimate (vssm.glsl), and there the clamp raised engine acne
-// 0.74 -> 0.98 %.
-#define SHADOWC_OCCLUDER_DEPTH(t, d) min(d, shadowc_tapDepth(t, d))
 
 // Lowest and highest offset of the plane over the texel centres of an inclusive rectangle (the
 // min-max early out must hold for every tap in it).
@@ -105,7 +94,6 @@ vec2 shadowc_receiverPlaneRange(ivec4 rect) {
 }
 #else
 #define SHADOWC_TAP_DEPTH(t, d) d
-#define SHADOWC_OCCLUDER_DEPTH(t, d) d
 #endif
 
 #ifdef SHADOWC_LIGHT_ORTHO

@@ -9,8 +9,8 @@
 #define SHADOWC_PCF_GLSL
 
 // 1 when the texel does not occlude a receiver at biased depth d (with the receiver-plane bias,
-// the plane's depth at t, never deeper than d: bias.glsl).
-float shadowc_litTexel(ivec2 t, float d) { return shadowc_depthAt(t) < SHADOWC_OCCLUDER_DEPTH(t, d) ? 0.0 : 1.0; }
+// the plane's depth at t: bias.glsl).
+float shadowc_litTexel(ivec2 t, float d) { return shadowc_depthAt(t) < SHADOWC_TAP_DEPTH(t, d) ? 0.0 : 1.0; }
 
 #if SHADOWC_PCF_PATTERN == SHADOWC_PATTERN_BILINEAR || SHADOWC_CONTACT
 float shadowc_litBilinear(vec2 pos, float d) {

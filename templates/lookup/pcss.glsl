@@ -21,7 +21,7 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
   for (int i = 0; i < SHADOWC_BLOCKER_TAPS; ++i) {
     ivec2 t = ivec2(floor(r.texel + shadowc_rotate(shadowc_poissonBlocker[i], rot) * (0.5 * w)));
     float z = shadowc_depthAt(t);
-    if (z < SHADOWC_OCCLUDER_DEPTH(t, r.d)) {
+    if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
       sum += z;
       count += 1.0;
     }
@@ -33,7 +33,7 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
       vec2 pos = r.texel + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
       ivec2 t = ivec2(floor(pos));
       float z = shadowc_depthAt(t);
-      if (z < SHADOWC_OCCLUDER_DEPTH(t, r.d)) {
+      if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
         sum += z;
         count += 1.0;
       }

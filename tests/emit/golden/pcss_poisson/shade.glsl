@@ -145,7 +145,7 @@ void shadowc_receiverPlaneBegin(vec3 worldPos, vec3 worldNormal, vec2 texel){
 }
 #line 83
 float shadowc_tapDepth(ivec2 t, float d){ return d + dot(shadowc_rpGradient, vec2(t)+ 0.5 - shadowc_rpCentre);}
-#line 99
+#line 88
 vec2 shadowc_receiverPlaneRange(ivec4 rect){
   vec2 a = shadowc_rpGradient *(vec2(rect . xy)+ 0.5 - shadowc_rpCentre);
   vec2 b = shadowc_rpGradient *(vec2(rect . zw)+ 0.5 - shadowc_rpCentre);
@@ -182,7 +182,7 @@ vec2 shadowc_rotate(vec2 tap, vec2 rot){ return vec2(rot . x * tap . x - rot . y
 #line 20 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcf.glsl"
 #line 13
-float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< min(d, shadowc_tapDepth(t, d))? 0.0 : 1.0;}
+float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< shadowc_tapDepth(t, d)? 0.0 : 1.0;}
 #line 50
 float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot){
   float lit = 0.0;
@@ -207,7 +207,7 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w){
   for(int i = 0;i < 16;++ i){
     ivec2 t = ivec2(floor(r . texel + shadowc_rotate(shadowc_poissonBlocker[i], rot)*(0.5 * w)));
     float z = shadowc_depthAt(t);
-    if(z < min(r . d, shadowc_tapDepth(t, r . d))){
+    if(z < shadowc_tapDepth(t, r . d)){
       sum += z;
       count += 1.0;
     }
