@@ -12,6 +12,7 @@
 
 #include "driver/driver.h"
 #include "manifest/compiled_passes.h"
+#include "planning/scene_analysis.h"
 #include "runtime/harness/scene_run.h"
 #include "runtime/images/atomic_file.h"
 #include "runtime/images/png_image.h"
@@ -66,6 +67,29 @@ SpecFacts specFacts(const Manifest& manifest) {
 }
 
 void progress(const char* what) { fmt::print(stderr, "shadowc: {}\n", what); }
+
+// Where a penumbra-sized kernel's `max` cuts the scene (issue 9 item 2: a cap must not truncate
+// silently): the scene analysis's penumbra widths (planning/scene_analysis.h, the PCSS form over
+// its own blocker search, with the scene's light) against the filter's max. The shaders clamp the
+// blocker search region and the kernel to max (templates/lookup/kernel.glsl).
+struct CapReport {
+  double maxTexels = 0;
+  uint64_t penumbraPixels = 0, penumbraOverCap = 0;
+  double searchP99 = 0;
+};
+std::optional<CapReport> capReport(const Manifest& manifest, const rt::PreparedScene& prepared) {
+  const nlohmann::json& k = manifest.spec.contains("kernel") ? manifest.spec["kernel"] : nlohmann::json();
+  if (!k.is_object() || k.value("size", "") != "penumbra") return std::nullopt;
+  // The analysis assumes one frustum (`plan` refuses point lights for the same reason).
+  if (prepared.scene.light.type == rt::LightType::Point) return std::nullopt;
+  const planning::SceneStats stats = planning::analyzeScene(prepared);
+  CapReport c;
+  c.maxTexels = k.value("max_texels", 0.0);
+  c.penumbraPixels = stats.penumbraTexels.count;
+  for (double w : stats.penumbraTexels.samples) c.penumbraOverCap += w > c.maxTexels ? 1 : 0;
+  c.searchP99 = stats.searchTexelsP99;
+  return c;
+}
 
 }  // namespace
 
@@ -147,6 +171,13 @@ int runValidation(const ValidationOptions& o) {
              metrics.p99AbsError);
   fmt::print("  light bleeding {:.4f}  over-darkening {:.4f}  non-finite {}  out of range {}\n", metrics.lightBleeding,
              metrics.overDarkening, metrics.nonFinite, metrics.outOfRange);
+  const std::optional<CapReport> caps = capReport(manifest, *prepared);
+  if (caps)
+    fmt::print(
+        "caps     kernel max {:g} texels: the penumbra is wider on {} of {} penumbra pixels (scene "
+        "analysis); blocker search region p99 {:.1f} texels{}\n",
+        caps->maxTexels, caps->penumbraOverCap, caps->penumbraPixels, caps->searchP99,
+        caps->searchP99 > caps->maxTexels ? ", cut to the max" : "");
   const size_t messages = ctx.validationMessageCount();
   if (ctx.validationEnabled()) fmt::print("validation {} messages\n", messages);
 
@@ -167,6 +198,11 @@ int runValidation(const ValidationOptions& o) {
     t["total_ms"] = timing.totalMs;
     j["timing"] = std::move(t);
     j["metrics"] = rt::toJson(metrics);
+    if (caps)
+      j["caps"] = {{"kernel_max_texels", caps->maxTexels},
+                   {"penumbra_pixels", caps->penumbraPixels},
+                   {"penumbra_over_max", caps->penumbraOverCap},
+                   {"search_texels_p99", caps->searchP99}};
     j["validation_messages"] = messages;
     rt::writeFileAtomically(o.jsonOut, j.dump(2) + "\n");
   }

@@ -172,8 +172,10 @@ struct BiasSpec {
   double normalOffset = 0;  // NormalOffset: world units along N, scaled by texel size
   // ReceiverPlane (Isidoro 2006): each tap compares against the receiver's tangent plane at that
   // texel, d + dot(dd/dtexel, tap - centre) - constant; the plane's depth slope (light-view depth
-  // per unit across the light's direction) is clamped to maxSlope (~84 degrees for 10).
-  double maxSlope = 10;
+  // per unit across the light's direction) is clamped to maxSlope: 50 (88.9 degrees from the
+  // light) is the language default; 10 clamped the 3-degree `grazing` floor (slope 19) and left
+  // 37 % acne under PCSS, 50 leaves 0.05 % (docs/accuracy.md "Bias").
+  double maxSlope = 50;
 };
 struct FallbackSpec {
   bool pcf = false;  // PCF on non-planar leaves (vssm sec. 5.2 option 2)

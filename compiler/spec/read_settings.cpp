@@ -443,9 +443,8 @@ class SettingsReader : ValueReader {
     bias.kind = kinds[*idx];
     Bound b;
     if (*idx == 3) {  // receiver_plane(constant: B, max_slope: S, normal_offset: O): all optional
-      // Default slope clamp 50 (88.9 degrees from the light): 10 clamped the 3-degree `grazing`
-      // floor (slope 19) and left 37 % acne under PCSS, 50 leaves 0.05 % (docs/accuracy.md "Bias").
-      bias.maxSlope = 50;
+      // The one default, BiasSpec's (filter_spec.h says why 50).
+      bias.maxSlope = BiasSpec{}.maxSlope;
       if (!bind(v, {{"constant", false}, {"max_slope", false}, {"normal_offset", false}}, b)) return;
       if (const Value* x = get(b, "max_slope"))
         if (auto n = number(x, arg("max_slope", v), Range{0, 1000, true})) bias.maxSlope = *n;

@@ -260,6 +260,9 @@ TEST(Combinations, ReceiverPlaneBias) {
   EXPECT_EQ(d.bias.kind, BiasKind::ReceiverPlane);
   EXPECT_DOUBLE_EQ(d.bias.constant, 1e-3);
   EXPECT_DOUBLE_EQ(d.bias.maxSlope, 50);
+  // A BiasSpec made in code (the planner, tests) gets the same clamp as the language default
+  // (the header said 10 while the reader set 50).
+  EXPECT_DOUBLE_EQ(BiasSpec{}.maxSlope, d.bias.maxSlope);
   const FilterSpec s = load("depth\nbias receiver_plane(constant: 0.0005, max_slope: 4)");
   EXPECT_DOUBLE_EQ(s.bias.constant, 5e-4);
   EXPECT_DOUBLE_EQ(s.bias.maxSlope, 4);

@@ -121,7 +121,7 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
 
   float len = length(nl)* length(pl);
   float ndotl = len > 0.0 ? clamp(dot(nl, - pl)/ len, 0.0, 1.0): 0.0;
-  return max(0.05 *(1.0 - ndotl), 0.002);
+  return max(0.05 *(1.0 - ndotl), 0.004);
 #line 39
 }
 #line 18 "lookup/shadowc_lookup.glsl"

@@ -137,7 +137,7 @@ void shadowc_receiverPlaneBegin(vec3 worldPos, vec3 worldNormal, vec2 texel){
   float texelWorld = 2.0 * pl . z * shadowc_frame(). lightParams . x / float(shadowc_mapSize(). x);
 
   float den = dot(nl, ray);
-  float lim = max(length(nl . xy)/ 50.0, 1e-20);
+  float lim = max(length(nl . xy)/ 20.0, 1e-20);
   den =(den < 0.0 ? - 1.0 : 1.0)* max(abs(den), lim);
   float range = shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y;
   shadowc_rpGradient = - nl . xy / den *(texelWorld / range);

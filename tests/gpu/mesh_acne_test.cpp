@@ -1,0 +1,69 @@
+// Acne on the real-mesh scenes at issue 9's settings (256^2 screen, 1024^2 map, 16x16 reference
+// samples, cached in the build dir): acne = `over_darkening`, the fraction of the pixels whose
+// reference is > 0.95 that the filter darkens below 0.8; issue 9's bound is 0.005. Each check has
+// a sibling that breaks the same bound on the same scene (numbers measured with `shadowc validate`
+// at the same settings; docs/accuracy.md "Bias").
+#include <gtest/gtest.h>
+
+#include <regex>
+#include <string>
+
+#include "gpu/accuracy_harness.h"
+#include "gpu/vulkan_fixture.h"
+
+namespace shadowc::test {
+namespace {
+
+constexpr uint32_t kScreen = 256, kMap = 1024;
+constexpr int kSamples = 16;
+constexpr double kAcneBound = 0.005;
+
+using MeshAcneTest = VulkanTest;
+
+// `sample` with its bias line replaced by `bias`.
+std::string withBias(const std::string& sample, const std::string& bias) {
+  const std::string text = sampleSource(sample);
+  const std::regex line(R"(\n\s*bias\s[^\n]*)");
+  EXPECT_TRUE(std::regex_search(text, line)) << sample;
+  return std::regex_replace(text, line, "\n    bias " + bias);
+}
+
+rt::Metrics run(const std::string& label, const std::string& source, const std::string& scene) {
+  const CompiledFilter* cf = compileFilterCached(label, source);
+  EXPECT_NE(cf, nullptr) << label;
+  if (!cf) return {};
+  const rt::PreparedScene& sc = sceneCase(VulkanTest::context(), scene, kMap, kScreen, kSamples);
+  const rt::Metrics m = rt::runOnScene(VulkanTest::context(), cf->passes, sc).metrics;
+  EXPECT_GT(m.compared, kScreen * kScreen / 8) << "too few geometry pixels";
+  EXPECT_EQ(m.nonFinite, 0u) << label;
+  EXPECT_EQ(m.outOfRange, 0u) << label;
+  return m;
+}
+
+// pcss_poisson's receiver plane with its slope clamped at 20 instead of the default 50: duck acne
+// 0.0052 with 50 (the sibling), measured 0.0039 now (RMSE 0.139 -> 0.138). The 3-degree grazing
+// floor (slope 19) stays inside the clamp: ReceiverPlaneBiasTest covers it with the default.
+TEST_F(MeshAcneTest, PcssSampleKeepsTheDuckUnderTheAcneBoundAtIssueSettings) {
+  const std::string sample = sampleSource("pcss_poisson");
+  ASSERT_NE(sample.find("max_slope: 20"), std::string::npos);
+  const rt::Metrics m = run("pcss_poisson", sample, "duck");
+  EXPECT_LE(m.overDarkening, kAcneBound);
+  EXPECT_LE(m.rmse, 0.145);
+  EXPECT_GT(
+      run("pcss_duck_slope50", withBias("pcss_poisson", "receiver_plane(constant: 0.001, normal_offset: 2)"), "duck")
+          .overDarkening,
+      kAcneBound);
+}
+
+// pcf_poisson16's slope bias with its floor at 0.004: spider acne 0.0052 with the former 0.002
+// (the sibling), measured 0.0043 now.
+TEST_F(MeshAcneTest, PcfSampleKeepsTheSpiderUnderTheAcneBoundAtIssueSettings) {
+  const std::string sample = sampleSource("pcf_poisson16");
+  ASSERT_NE(sample.find("slope(0.05, constant: 0.004)"), std::string::npos);
+  EXPECT_LE(run("pcf_poisson16", sample, "spider").overDarkening, kAcneBound);
+  EXPECT_GT(run("pcf_spider_c002", withBias("pcf_poisson16", "slope(0.05, constant: 0.002)"), "spider").overDarkening,
+            kAcneBound);
+}
+
+}  // namespace
+}  // namespace shadowc::test
