@@ -13,6 +13,7 @@
 #include <filesystem>
 #include <map>
 #include <memory>
+#include <regex>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,31 @@ inline const rt::PreparedScene& sceneCase(rt::VulkanContext& ctx, const std::str
   settings.referenceSamples = samples;
   settings.referenceCache = referenceCacheDir();
   return *(cache[key] = rt::prepareScene(ctx, settings));
+}
+
+// Sample `sample` with its bias line replaced by `bias` (appended when it has none): the bias tests
+// compare a sample against the same filter with another bias.
+inline std::string withBias(const std::string& sample, const std::string& bias) {
+  const std::string text = sampleSource(sample);
+  const std::regex line(R"(\n\s*bias\s[^\n]*)");
+  if (std::regex_search(text, line)) return std::regex_replace(text, line, "\n    bias " + bias);
+  const size_t close = text.rfind('}');
+  return text.substr(0, close) + "    bias " + bias + "\n}\n";
+}
+
+// Runs `source` (compiled once per label) on built-in `scene` and returns its metrics, failing the
+// test when too few geometry pixels were compared or any value is non-finite or out of [0, 1].
+inline rt::Metrics runOnBuiltinScene(rt::VulkanContext& ctx, const std::string& label, const std::string& source,
+                                     const std::string& scene, uint32_t map, uint32_t screen, int samples) {
+  const CompiledFilter* cf = compileFilterCached(label, source);
+  EXPECT_NE(cf, nullptr) << label;
+  if (!cf) return {};
+  const rt::PreparedScene& sc = sceneCase(ctx, scene, map, screen, samples);
+  const rt::Metrics m = rt::runOnScene(ctx, cf->passes, sc).metrics;
+  EXPECT_GT(m.compared, screen * screen / 8) << "too few geometry pixels";
+  EXPECT_EQ(m.nonFinite, 0u) << label;
+  EXPECT_EQ(m.outOfRange, 0u) << label;
+  return m;
 }
 
 // Largest |a - b| over two equally long arrays, with its index; NaN counts as infinite.

@@ -21,25 +21,8 @@ constexpr double kAcneBound = 0.005;
 
 using ReceiverPlaneBiasTest = VulkanTest;
 
-// `sample` with its bias line replaced by `bias` (appended when it has none).
-std::string withBias(const std::string& sample, const std::string& bias) {
-  const std::string text = sampleSource(sample);
-  const std::regex line(R"(\n\s*bias\s[^\n]*)");
-  if (std::regex_search(text, line)) return std::regex_replace(text, line, "\n    bias " + bias);
-  const size_t close = text.rfind('}');
-  return text.substr(0, close) + "    bias " + bias + "\n}\n";
-}
-
 rt::Metrics run(const std::string& label, const std::string& source, const std::string& scene) {
-  const CompiledFilter* cf = compileFilterCached(label, source);
-  EXPECT_NE(cf, nullptr) << label;
-  if (!cf) return {};
-  const rt::PreparedScene& sc = sceneCase(VulkanTest::context(), scene, kMap, kScreen, kSamples);
-  const rt::Metrics m = rt::runOnScene(VulkanTest::context(), cf->passes, sc).metrics;
-  EXPECT_GT(m.compared, kScreen * kScreen / 8) << "too few geometry pixels";
-  EXPECT_EQ(m.nonFinite, 0u) << label;
-  EXPECT_EQ(m.outOfRange, 0u) << label;
-  return m;
+  return runOnBuiltinScene(VulkanTest::context(), label, source, scene, kMap, kScreen, kSamples);
 }
 
 // The plane itself, no normal offset: the `grazing` floor meets the light at ~3 degrees (depth
