@@ -14,7 +14,7 @@ namespace shadowc {
 namespace {
 
 // Integers the templates use in #if or as array sizes: they stay compile-time.
-constexpr std::string_view kStaticIntegers[] = {"SHADOWC_LAYERS"};
+constexpr std::string_view kStaticIntegers[] = {"SHADOWC_LAYERS", "SHADOWC_SAT_PIECES"};
 
 bool staysStatic(const Constant& c) {
   if (!std::holds_alternative<long long>(c.value) && !std::holds_alternative<Real>(c.value)) return true;

@@ -12,7 +12,8 @@
 // the templates test with #if (technique, warp, SAT kind, subdivision kinds, PCF pattern, bias
 // kind, blocker kind and pattern, the SHADOWC_HAS_* resource switches, penumbra kernel,
 // rotation, bleeding on/off, layer blend, fallback, contact, early out, MSM quantized) and the
-// layer count (it sizes arrays and picks the layered code). The prefilter passes (moments,
+// layer count (it sizes arrays and picks the layered code), and the int32 SAT's pieces per axis
+// (SHADOWC_SAT_PIECES, from `max`: whether sat.glsl sums wide boxes in pieces). The prefilter passes (moments,
 // blur, SAT, mips, min-max, Lloyd) stay specialized: they run per map texel, not per pixel.
 #pragma once
 

@@ -235,7 +235,7 @@ class Planner {
 int pyramidLevels(const FilterSpec& spec) {
   const double texels = std::max(2.0, spec.kernel.maxTexels);
   const int k = static_cast<int>(std::ceil(std::log2(texels) - 1e-9));
-  return std::clamp(k, 1, 12) + 1;
+  return std::clamp(k, 1, kMaxPyramidLevel) + 1;
 }
 
 // Separable blur weights w[0..r], w[k] = w[-k], summing to 1 over [-r, r].

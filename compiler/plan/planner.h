@@ -13,9 +13,12 @@ namespace shadowc {
 PassGraph planPasses(const FilterSpec& spec);
 
 // Levels of the `moments` mip chain and of the `minmax` pyramid: K + 1 with
-// K = ceil(log2(kernel.maxTexels)), clamped to [1, 12], so that the coarsest level covers the
-// widest kernel the filter can ask for (a fixed count keeps the manifest independent of the
-// map size; the runtime needs a map of at least 2^K texels).
+// K = ceil(log2(kernel.maxTexels)), clamped to [1, kMaxPyramidLevel], so that the coarsest level
+// covers the widest kernel the filter can ask for (a fixed count keeps the manifest independent of
+// the map size; the runtime needs a map of at least 2^K texels). A kernel wider than 2^8 (a SAT
+// kernel's default max is the whole map) reads every top-level cell it spans (minmax.glsl): at
+// most 5 x 5 on a 1024^2 map, and the pyramid still fits maps from 256^2 up.
+inline constexpr int kMaxPyramidLevel = 8;
 int pyramidLevels(const FilterSpec& spec);
 
 // Separable blur weights w[0..r] (w[-k] = w[k], summing to 1 over [-r, r]) that the blur passes

@@ -13,6 +13,7 @@
 #include "plan/poisson_disk.h"
 #include "plan/quadtree_tables.h"
 #include "plan/template_codes.h"
+#include "spec/precision.h"
 
 namespace shadowc {
 namespace {
@@ -107,9 +108,12 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   // ---- kernel -----------------------------------------------------------------------------
   defBool("SHADOWC_KERNEL_PENUMBRA", s.kernel.size == KernelSize::Penumbra);
   defReal("SHADOWC_KERNEL_FIXED_TEXELS", std::max(1, s.kernel.fixedTexels));
-  // An int32 SAT box sum must fit in 32 bits: 255^2 texels * 65536 < 2^32 (sat.glsl, FACTS.md).
+  defReal("SHADOWC_KERNEL_MAX_TEXELS", std::clamp(s.kernel.maxTexels, 1.0, spec::kMaxKernelTexels));
+  // An int32 SAT box sum fits in 32 bits up to 255^2 texels (255^2 * 65536 < 2^32, FACTS.md): a
+  // penumbra kernel wider than 255 texels is summed in pieces of at most 255 a side (sat.glsl).
   const bool int32Sat = moments && s.storage.sat == SatKind::Int32;
-  defReal("SHADOWC_KERNEL_MAX_TEXELS", std::clamp(s.kernel.maxTexels, 1.0, int32Sat ? 255.0 : 1e6));
+  if (int32Sat && s.kernel.size == KernelSize::Penumbra)
+    defInt("SHADOWC_SAT_PIECES", s.naiveUnguarded ? 1 : spec::int32SatPieces(s.kernel.maxTexels));
   defCode("SHADOWC_KERNEL_SUBDIVISION", subdivisionCode(s.kernel.subdivision));
   defInt("SHADOWC_KERNEL_N", std::max(1, s.kernel.uniformN));
   defInt("SHADOWC_KERNEL_HEIGHT", s.kernel.quadtreeHeight);
@@ -161,6 +165,7 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   defInt("SHADOWC_CONTACT_N", std::max(1, s.contact.n));
   defReal("SHADOWC_CONTACT_EPSILON", s.contact.epsilon);
   defBool("SHADOWC_EARLY_OUT", s.earlyOutMinMax);
+  defBool("SHADOWC_BACKFACE_SHADOWED", s.backfaceShadowed);
   // The early out must cover the blur footprint too (shadowc_lookup.glsl, shadowc_influenceRect).
   if (s.earlyOutMinMax && moments && s.prefilter.blur != BlurKind::None && s.prefilter.blurRadius > 0)
     defInt("SHADOWC_EARLY_OUT_GROW", s.prefilter.blurRadius);

@@ -150,12 +150,6 @@ const Rule kRules[] = {
     {DiagId::negativeMomentsUnrepresentable, Caret::Storage,
      [](const Facts& f) { return f.moments && f.int32Sat && f.s.moments.warp == Warp::Evsm4; },
      [](const Facts&, Args& a) { push(a, "an int32 16.16 SAT"); }},
-    {DiagId::satBoxOverflow, Caret::KernelElseStorage,
-     [](const Facts& f) {
-       const KernelSpec& k = f.s.kernel;
-       return f.moments && f.int32Sat && k.size == KernelSize::Penumbra && k.maxTexels * k.maxTexels > kInt32SatMaxBoxTexels;
-     },
-     [](const Facts& f, Args& a) { push(a, f.s.kernel.maxTexels, f.s.kernel.maxTexels * f.s.kernel.maxTexels); }},
     {DiagId::expWarpFp32Sat, Caret::Storage, [](const Facts& f) { return f.expFp32Sat(); },
      [](const Facts& f, Args& a) {
        const double w = static_cast<double>(f.s.mapSize);

@@ -214,6 +214,7 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
   j["fallback"] = J{{"pcf", s.fallback.pcf}, {"n", s.fallback.n}};
   j["contact"] = J{{"enabled", s.contact.enabled}, {"n", s.contact.n}, {"epsilon", s.contact.epsilon}};
   j["early_out_minmax"] = s.earlyOutMinMax;
+  j["backface"] = s.backfaceShadowed ? "shadowed" : "filtered";
   j["map_size"] = s.mapSize;
   // Written only when cascaded, so every other manifest stays byte-identical.
   if (s.cascades.count > 0)

@@ -202,12 +202,17 @@ struct FilterSpec {
   FallbackSpec fallback;
   ContactSpec contact;
   bool earlyOutMinMax = false;  // min-max hierarchical shadow map (vssm sec. 6.1)
-  CascadeSpec cascades;         // a sun only (checker, light_rules.cpp)
+  // `backface shadowed`: a receiver with the whole light behind its tangent plane gets 0, the
+  // shadowing term's value there (docs/scenes.md; one dot product before any fetch); `filtered`
+  // runs the filter for it too (two-sided surfaces whose normal may face away from the light).
+  bool backfaceShadowed = true;
+  CascadeSpec cascades;  // a sun only (checker, light_rules.cpp)
   // Largest shadow-map side (texels) the precision checks assume: SAT sums of W^2 texels
   // lower the EVSM exponent limit by ln(W^2)/2 (FACTS.md "Precision"). The runtime must not
   // run the filter on a larger map. Setting `map_size`.
   int mapSize = 2048;
-  // Debug only, not reachable from the DSL: drop the NaN/Inf guards of the VSSM blocker
+  // Debug only, not reachable from the DSL: read every int32 SAT box with one 4-corner sum
+  // however wide (no pieces, sat.glsl), and drop the NaN/Inf guards of the VSSM blocker
   // estimate (eq. 4's 1/(1 - P)) and the final [0, 1] sanitation, so the stability suite
   // (validation/, docs/stability.md) can show the naive form failing. Never set by the checker.
   bool naiveUnguarded = false;

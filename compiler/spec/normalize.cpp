@@ -27,6 +27,11 @@ void normalize(FilterSpec& spec, const SettingsRead& given) {
       k.fixedTexels = w;
     }
   }
+  // Kernel max: what the storage supports (issue 9 item 2). A summed-area table answers a box of
+  // any size at the same cost (the int32 one in exact pieces of <= 255 texels, sat.glsl), so a
+  // penumbra kernel over a SAT is clamped only by the map. Depth taps, mip chains and the min-max
+  // pyramid keep 64: their levels are sized from `max` and taps spread over it.
+  if (!given.kernelMax && moments && spec.storage.sat != SatKind::None) spec.kernel.maxTexels = kMaxKernelTexels;
   // Sampling (depth representation): a fixed kernel of W texels is sampled W x W; a penumbra
   // kernel with Poisson taps and stable rotation (pcss-blog.txt).
   if (!given.sampling && !moments) {

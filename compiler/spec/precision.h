@@ -22,6 +22,16 @@ ExponentLimit warpExponentLimit(const StorageSpec& storage, int mapSize);
 // Int32 16.16 SAT: a box sum of k texels of values <= 1 fits in 32 bits while k*65536 < 2^32
 // (modular arithmetic makes every such box sum exact; FACTS.md), i.e. k <= 65535 texels.
 inline constexpr int kInt32SatMaxBoxTexels = 65535;
+// So a wider box is summed in pieces of at most 255 texels a side (255^2 <= 65535), each exact,
+// added in float (templates/lookup/sat.glsl): kernels up to the whole map keep 16.16 precision.
+inline constexpr int kInt32SatPieceTexels = 255;
+// Search and penumbra kernels are clamped to `max` (at most this) and to the map.
+inline constexpr double kMaxKernelTexels = 4096;
+// Pieces per axis of the widest box a kernel clamped to `maxTexels` can query.
+inline int int32SatPieces(double maxTexels) {
+  const double w = maxTexels < 1 ? 1 : maxTexels > kMaxKernelTexels ? kMaxKernelTexels : maxTexels;
+  return static_cast<int>((static_cast<long long>(w + 0.999999) + kInt32SatPieceTexels - 1) / kInt32SatPieceTexels);
+}
 
 // Moment shadow maps (Peters & Klein 2015). The moment bias alpha must cover the rounding of the
 // stored moments: 3e-5 for 16-bit storage (unorm16, the 16.16 int32 SAT), the paper's value with

@@ -204,6 +204,7 @@ std::string printFilter(const FilterSpec& s) {
   lines.emplace_back("bleeding", s.moments.bleedingReduction > 0
                                      ? call("reduce", {"amount: " + num(s.moments.bleedingReduction)})
                                      : "none");
+  lines.emplace_back("backface", s.backfaceShadowed ? "shadowed" : "filtered");
   lines.emplace_back("map_size", std::to_string(s.mapSize));
   if (s.cascades.count > 0) {
     const CascadeSpec& c = s.cascades;

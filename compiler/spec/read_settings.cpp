@@ -9,6 +9,7 @@
 #include <map>
 #include <optional>
 
+#include "spec/precision.h"
 #include "spec/value_reader.h"
 
 namespace shadowc::spec {
@@ -19,8 +20,9 @@ using dsl::DiagId;
 using dsl::Setting;
 using dsl::Value;
 
-const Names kSettings = {"light",    "depth", "moments",  "storage", "blur",      "mips",     "blocker",  "kernel",
-                         "sampling", "bias",  "fallback", "contact", "early_out", "bleeding", "map_size", "cascades"};
+const Names kSettings = {"light",     "depth",    "moments",  "storage",  "blur",     "mips",
+                         "blocker",   "kernel",   "sampling", "bias",     "fallback", "contact",
+                         "early_out", "backface", "bleeding", "map_size", "cascades"};
 
 class SettingsReader : ValueReader {
  public:
@@ -94,6 +96,8 @@ class SettingsReader : ValueReader {
       out_.contact = &s, readContact(v, what);
     else if (s.keyword == "early_out") {
       if (auto c = choice(&v, what, {"none", "minmax"})) out_.spec.earlyOutMinMax = *c == 1;
+    } else if (s.keyword == "backface") {
+      if (auto c = choice(&v, what, {"shadowed", "filtered"})) out_.spec.backfaceShadowed = *c == 0;
     } else if (s.keyword == "bleeding")
       out_.bleeding = &s, readBleeding(v, what);
     else if (s.keyword == "cascades")
@@ -404,7 +408,7 @@ class SettingsReader : ValueReader {
       if (auto c = choice(x, arg("traversal", v), {"table", "unrolled"}))
         k.traversal = *c == 0 ? QuadtreeTraversal::Table : QuadtreeTraversal::Unrolled;
     if (const Value* x = get(b, "max"))
-      if (auto n = number(x, arg("max", v), Range{1, 4096})) k.maxTexels = *n;
+      if (auto n = number(x, arg("max", v), Range{1, kMaxKernelTexels})) k.maxTexels = *n, out_.kernelMax = x;
     if (const Value* x = get(b, "lit_threshold"))
       if (auto n = number(x, arg("lit_threshold", v), Range{0, 0.5})) k.litThreshold = *n;
   }

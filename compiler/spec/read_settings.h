@@ -21,7 +21,7 @@ struct SettingsRead {
   const dsl::Setting* bias = nullptr;
   // Arguments whose presence changes a default or that a combination rule points at.
   const dsl::Value *exponent = nullptr, *negativeExponent = nullptr, *minVariance = nullptr, *split = nullptr,
-                   *layers = nullptr, *momentBias = nullptr;
+                   *layers = nullptr, *momentBias = nullptr, *kernelMax = nullptr;
   bool lightSizeGiven = false;
   bool explicitOk = false;             // `split: explicit(...)` read without error
   std::vector<double> explicitSplits;  // its boundaries, in file order

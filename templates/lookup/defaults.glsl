@@ -101,7 +101,10 @@
 #define SHADOWC_KERNEL_FIXED_TEXELS 3.0
 #endif
 #ifndef SHADOWC_KERNEL_MAX_TEXELS
-#define SHADOWC_KERNEL_MAX_TEXELS 64.0  // clamps search and penumbra kernels
+#define SHADOWC_KERNEL_MAX_TEXELS 4096.0  // clamps search and penumbra kernels (and the map does)
+#endif
+#ifndef SHADOWC_SAT_PIECES
+#define SHADOWC_SAT_PIECES 1  // pieces per axis of the widest int32 SAT box (sat.glsl)
 #endif
 #ifndef SHADOWC_KERNEL_SUBDIVISION
 #define SHADOWC_KERNEL_SUBDIVISION SHADOWC_SUBDIV_NONE
@@ -232,6 +235,9 @@
 // 1: eq. 4 of vssm-yang2010 as printed (no 1 - P guard, no clamp), the raw blocker depth written
 // to the visibility image without sanitation, so the suite can show the naive form failing.
 // Single-line hooks so that the normal path's text and line numbers do not change.
+#ifndef SHADOWC_BACKFACE_SHADOWED
+#define SHADOWC_BACKFACE_SHADOWED 1  // the whole light behind the tangent plane -> 0 (shadowc_lookup.glsl)
+#endif
 #ifndef SHADOWC_NAIVE_UNGUARDED
 #define SHADOWC_NAIVE_UNGUARDED 0
 #endif

@@ -6,8 +6,10 @@
 // Storage kinds:
 //   int32:         v in [0, 1] stored as uint(round(v * 65536)) (16.16 fixed point); the sums
 //                  wrap around mod 2^32 and the 4-corner difference is done in uint, which is
-//                  exact as long as the box sum itself fits in 32 bits: the compiler caps the
-//                  kernel at 255 texels (255^2 * 65536 < 2^32). Mean = sum / (65536 * area).
+//                  exact as long as the box sum itself fits in 32 bits (255^2 * 65536 < 2^32).
+//                  A wider box (SHADOWC_SAT_PIECES > 1) is cut into pieces of at most 255 texels
+//                  a side, each an exact uint box sum, added in float (issue 9 item 2: kernels up
+//                  to the whole map, below). Mean = sum / (65536 * area).
 //   fp32 centered: sums of (v - 0.5); mean = sum / area + 0.5 (the usual fix, still 0.09 off on
 //                  1x1 boxes of a 2048^2 map: docs/stability.md; exponential warps are E0420).
 //   fp32 naive:    plain sums; kept so the stability suite can show its error (FACTS.md).
@@ -56,14 +58,58 @@ vec4 shadowc_satMeanOfSum(shadowc_SatSum sum, float area) {
 #endif
 }
 
+#if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32 && SHADOWC_SAT_PIECES > 1
+#define SHADOWC_SAT_WIDE 1
+#else
+#define SHADOWC_SAT_WIDE 0
+#endif
+
+#if SHADOWC_SAT_WIDE
+// Wide int32 boxes (issue 9 item 2: kernels up to the whole map at bounded cost, without giving
+// up the 16.16 precision small boxes need; fewer fractional bits would raise the variance noise
+// of every 1x1 box by 2^(16-F), see shadowc_satVarianceFloor). Along each axis the box is cut
+// into pieces of at most 255 texels; each piece box sum fits in 32 bits, so its wrap-around
+// difference is exact, and the pieces are added in float (relative error <= P^2 * 2^-24 of the
+// sum, far under the variance floor). A row of P pieces reads 2 (P + 1) corners: 4 for a box
+// within 255 texels (bit-identical to the plain query), 60 for a whole 1024^2 map (P = 5).
+const int shadowc_satPiece = 255;
+
+// Start (exclusive, -1 based like the corners) of piece `i` of the texels [lo, hi] on one axis.
+int shadowc_satCut(int lo, int hi, int i) { return min(lo - 1 + i * shadowc_satPiece, hi); }
+
+vec4 shadowc_summedSum(ivec4 rect, int layer) {
+  ivec2 pieces = (rect.zw - rect.xy + shadowc_satPiece) / shadowc_satPiece;
+  vec4 sum = vec4(0.0);
+  for (int j = 0; j < SHADOWC_SAT_PIECES && j < pieces.y; ++j) {
+    int y0 = shadowc_satCut(rect.y, rect.w, j);
+    int y1 = shadowc_satCut(rect.y, rect.w, j + 1);
+    uvec4 lo0 = shadowc_summedCorner(rect.x - 1, y0, layer);
+    uvec4 hi0 = shadowc_summedCorner(rect.x - 1, y1, layer);
+    for (int i = 1; i <= SHADOWC_SAT_PIECES && i <= pieces.x; ++i) {
+      int x1 = shadowc_satCut(rect.x, rect.z, i);
+      uvec4 lo1 = shadowc_summedCorner(x1, y0, layer);
+      uvec4 hi1 = shadowc_summedCorner(x1, y1, layer);
+      sum += vec4(hi1 - hi0 - lo1 + lo0);
+      lo0 = lo1;
+      hi0 = hi1;
+    }
+  }
+  return sum;
+}
+#endif
+
 // Mean of the moments over the inclusive texel rectangle (x0, y0, x1, y1).
 vec4 shadowc_summedMean(ivec4 rect, int layer) {
   float area = float((rect.z - rect.x + 1) * (rect.w - rect.y + 1));
   area = max(area, 1.0);
+#if SHADOWC_SAT_WIDE
+  return shadowc_summedSum(rect, layer) / (65536.0 * area);
+#else
   shadowc_SatSum sum = shadowc_summedCorner(rect.z, rect.w, layer) - shadowc_summedCorner(rect.x - 1, rect.w, layer) -
                        shadowc_summedCorner(rect.z, rect.y - 1, layer) +
                        shadowc_summedCorner(rect.x - 1, rect.y - 1, layer);
   return shadowc_satMeanOfSum(sum, area);
+#endif
 }
 
 #if SHADOWC_SAT_FRACTIONAL
@@ -86,6 +132,54 @@ void shadowc_boxSegments(float a, float b, out ivec4 k, out vec3 w) {
   }
 }
 
+#if SHADOWC_SAT_WIDE
+// The same integral for boxes wider than a piece: per axis the segments are the partly covered
+// first texel, the whole texels in pieces of at most 255 (sat.glsl's wide sums), and the partly
+// covered last texel. Segment s runs from boundary s to s + 1 (texel boundaries, I(k) = S(k - 1)).
+int shadowc_segmentCount(float a, float b) {
+  int n0 = int(floor(a));
+  int n1 = int(floor(b));
+  return n1 <= n0 ? 1 : 2 + (n1 - n0 - 1 + shadowc_satPiece - 1) / shadowc_satPiece;
+}
+int shadowc_segmentBound(float a, float b, int s, int count) {
+  int n0 = int(floor(a));
+  if (s == 0) return n0;
+  if (s == count) return (count == 1 ? n0 : int(floor(b))) + 1;
+  return min(n0 + 1 + (s - 1) * shadowc_satPiece, int(floor(b)));
+}
+float shadowc_segmentWeight(float a, float b, int s, int count) {
+  if (count == 1) return b - a;
+  if (s == 0) return 1.0 - (a - floor(a));
+  return s == count - 1 ? b - floor(b) : 1.0;
+}
+
+vec4 shadowc_summedMeanBox(vec4 box, int layer) {
+  int cx = shadowc_segmentCount(box.x, box.z);
+  int cy = shadowc_segmentCount(box.y, box.w);
+  ivec2 last = textureSize(shadowc_summedArea, 0).xy;
+  vec4 sum = vec4(0.0);
+  for (int j = 0; j < SHADOWC_SAT_PIECES + 2 && j < cy; ++j) {
+    float wy = shadowc_segmentWeight(box.y, box.w, j, cy);
+    if (!(wy > 0.0)) continue;
+    int y0 = min(shadowc_segmentBound(box.y, box.w, j, cy), last.y) - 1;
+    int y1 = min(shadowc_segmentBound(box.y, box.w, j + 1, cy), last.y) - 1;
+    int x0 = min(shadowc_segmentBound(box.x, box.z, 0, cx), last.x) - 1;
+    uvec4 lo0 = shadowc_summedCorner(x0, y0, layer);
+    uvec4 hi0 = shadowc_summedCorner(x0, y1, layer);
+    for (int i = 0; i < SHADOWC_SAT_PIECES + 2 && i < cx; ++i) {
+      int x1 = min(shadowc_segmentBound(box.x, box.z, i + 1, cx), last.x) - 1;
+      uvec4 lo1 = shadowc_summedCorner(x1, y0, layer);
+      uvec4 hi1 = shadowc_summedCorner(x1, y1, layer);
+      float weight = shadowc_segmentWeight(box.x, box.z, i, cx) * wy;
+      if (weight > 0.0) sum += weight * vec4(hi1 - hi0 - lo1 + lo0);
+      lo0 = lo1;
+      hi0 = hi1;
+    }
+  }
+  float area = max((box.z - box.x) * (box.w - box.y), 1e-12);
+  return sum / (65536.0 * area);
+}
+#else
 vec4 shadowc_summedMeanBox(vec4 box, int layer) {
   ivec4 kx, ky;
   vec3 wx, wy;
@@ -117,6 +211,7 @@ vec4 shadowc_summedMeanBox(vec4 box, int layer) {
   return sum / area;
 #endif
 }
+#endif
 #endif
 
 #endif

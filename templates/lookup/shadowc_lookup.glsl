@@ -85,7 +85,36 @@ ivec4 shadowc_influenceRect(shadowc_Receiver r) {
 }
 #endif
 
+#if SHADOWC_BACKFACE_SHADOWED
+// True when no point of the light lies in front of the receiver's tangent plane: there the
+// shadowing term is 0 by definition (DESIGN.md "What right means", docs/scenes.md; the N.L term
+// already darkens it in a renderer), while a shadow map sees the receiver's own surface, or,
+// after a bias or normal offset, nothing at all (lit back faces). One test, no fetch:
+//   spot:  the light's rectangle (or the disk inside it) of width w in the light view's z = 0
+//          plane, centred at the origin: max over it of n.(q - p) = -n.p + w/2 (|n_x| + |n_y|)
+//          (the rectangle's bound, so a disk light is never zeroed wrongly);
+//   sun:   directions within the cap of half-angle a around -z (tan a = w / 2, frame_ortho.glsl):
+//          some lies in front unless the angle between n and -z is >= 90 deg + a, n_z >= |n| sin a;
+//   point: the sphere of radius w/2 at the origin: max = -n.p + |n| w/2.
+bool shadowc_lightBehind(vec3 worldPos, vec3 worldNormal) {
+  vec3 p = (shadowc_frame().lightView * vec4(worldPos, 1.0)).xyz;
+  vec3 n = mat3(shadowc_frame().lightView) * worldNormal;
+  float h = 0.5 * shadowc_lightWidth();
+#ifdef SHADOWC_LIGHT_ORTHO
+  float len = length(n);
+  return len > 0.0 && n.z >= len * h / sqrt(1.0 + h * h);
+#elif defined(SHADOWC_LIGHT_CUBE)
+  return dot(n, -p) + h * length(n) <= 0.0;
+#else
+  return dot(n, -p) + h * (abs(n.x) + abs(n.y)) <= 0.0;
+#endif
+}
+#endif
+
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
+#if SHADOWC_BACKFACE_SHADOWED
+  if (shadowc_lightBehind(worldPos, worldNormal)) return 0.0;
+#endif
   shadowc_Receiver r;
   if (!shadowc_receiver(worldPos, worldNormal, r)) return 1.0;
 #if SHADOWC_EARLY_OUT && SHADOWC_HAS_MINMAX

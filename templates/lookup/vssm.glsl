@@ -198,7 +198,12 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       shadowc_SatSum hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
       float area = float((x1 - x0) * (y1 - y0));
       vec4 box = vec4(x0, y0, x1, y1);
-      if (shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - lo1 + lo0, area), area) == 1) shadowc_qtResolveLeaf(box);
+      vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - lo1 + lo0, area);
+#if SHADOWC_SAT_WIDE
+      // a sub-kernel over 255 texels a side wraps its int32 sum: the wide query (sat.glsl)
+      if (max(x1 - x0, y1 - y0) > shadowc_satPiece) mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
+#endif
+      if (shadowc_qtAccept(mean, area) == 1) shadowc_qtResolveLeaf(box);
       x0 = x1;
       lo0 = lo1;
       hi0 = hi1;

@@ -58,11 +58,12 @@ std::string sample(const std::string& name) {
 // samples/filters/vssm_adaptive.shadow: int32 SAT, moments blocker, quadtree(height: 3) kernel,
 // min-max early out, PCF fallback and contact path.
 const std::vector<std::string> kVssmChecks = {
-    "CHECK: ; shadowc pass graph, filter vssm_adaptive: 6 images, 6 passes",
+    "CHECK: ; shadowc pass graph, filter vssm_adaptive: 6 images, 7 passes",
     "CHECK: image shadow_depth r32f size map levels 1 layers 1 role input_depth",
     // The fused prefilter (issue 10): no moments image, the SAT row scan warps the depth.
     "CHECK-NEXT: image sat rg32ui size map levels 1 layers 1 role internal",
-    "CHECK-NEXT: image minmax rg32f size map levels 7 layers 1 role internal",
+    // A SAT kernel's max defaults to the whole map: the pyramid stops at level 8 (planner.h).
+    "CHECK-NEXT: image minmax rg32f size map levels 9 layers 1 role internal",
     "CHECK-NEXT: pass 0 sat_rows kind sat",
     "CHECK-NEXT:   template passes/sat_rows.comp stem sat_rows",
     "CHECK-NEXT:   local 64x1x1 dispatch rows map",
@@ -82,11 +83,15 @@ const std::vector<std::string> kVssmChecks = {
     "CHECK: dispatch texels map>>6",
     "CHECK: value SHADOWC_MINMAX_LEVEL0 bool 0",
     "CHECK-NEXT: value SHADOWC_MINMAX_TWO bool 1",
-    "CHECK-NOT: pass 6",
-    "CHECK: pass 5 shade kind shade",
+    "CHECK: pass 5 minmax78 kind minmax",
+    "CHECK-NOT: pass 7",
+    "CHECK: pass 6 shade kind shade",
     "CHECK: binding 6 sat sampled",
     "CHECK: value SHADOWC_TECHNIQUE enum SHADOWC_TECHNIQUE_VSSM (3)",
     "CHECK: value SHADOWC_LIGHT_WIDTH real 0.04",
+    // Boxes up to the whole map: the int32 SAT sums them in pieces of 255 (sat.glsl).
+    "CHECK: value SHADOWC_KERNEL_MAX_TEXELS real 4096",
+    "CHECK-NEXT: value SHADOWC_SAT_PIECES int 17",
     "CHECK: value SHADOWC_KERNEL_SUBDIVISION enum SHADOWC_SUBDIV_QUADTREE (2)",
     "CHECK: value SHADOWC_KERNEL_HEIGHT int 3",
     "CHECK: value SHADOWC_BLOCKER_KIND enum SHADOWC_BLOCKER_MOMENTS (2)",

@@ -192,8 +192,10 @@ TEST(Planner, PyramidLevelsCoverTheWidestKernel) {
   EXPECT_EQ(pyramidLevels(s), 7);
   s.kernel.maxTexels = 65;
   EXPECT_EQ(pyramidLevels(s), 8);
-  s.kernel.maxTexels = 1e9;
-  EXPECT_EQ(pyramidLevels(s), 13);  // clamped
+  s.kernel.maxTexels = 256;
+  EXPECT_EQ(pyramidLevels(s), 9);
+  s.kernel.maxTexels = 4096;       // a SAT kernel's default: the top level's cells are 256 wide
+  EXPECT_EQ(pyramidLevels(s), 9);  // clamped (kMaxPyramidLevel), fits maps from 256^2 up
 }
 
 }  // namespace

@@ -156,10 +156,31 @@ TEST(Combinations, SatCornersOption) {
             std::string::npos);
 }
 
-TEST(Combinations, Int32SatBoxLimit) {
+TEST(Combinations, Int32SatServesKernelsUpToTheMap) {
+  // Issue 9 item 2: an int32 SAT sums boxes wider than 255 texels in exact pieces (sat.glsl),
+  // so E0412 (max <= 255) is retired and any max up to 4096 is accepted.
   const std::string base = "moments linear\nstorage sat(int32)\nblocker moments\n";
   EXPECT_EQ(codes(base + "kernel uniform(4, max: 255)"), Codes{});
-  EXPECT_EQ(codes(base + "kernel uniform(4, max: 256)"), Codes{"E0412"});
+  EXPECT_EQ(codes(base + "kernel uniform(4, max: 256)"), Codes{});
+  EXPECT_EQ(codes(base + "kernel uniform(4, max: 4096)"), Codes{});
+  EXPECT_EQ(codes(base + "kernel uniform(4, max: 4097)"), Codes{"E0304"});
+  EXPECT_EQ(spec::int32SatPieces(255), 1);
+  EXPECT_EQ(spec::int32SatPieces(256), 2);
+  EXPECT_EQ(spec::int32SatPieces(1024), 5);
+  EXPECT_EQ(spec::int32SatPieces(4096), 17);
+}
+
+TEST(Normalize, KernelMaxDefaultsToWhatTheStorageServes) {
+  // A SAT answers any box at the same cost: its penumbra kernels default to the whole map; depth
+  // taps, mips and the min-max pyramid keep 64; an explicit max is kept.
+  EXPECT_EQ(load("moments linear\nstorage sat(int32)\nblocker moments").kernel.maxTexels, spec::kMaxKernelTexels);
+  EXPECT_EQ(load("moments linear\nstorage sat(fp32_centered)\nblocker moments").kernel.maxTexels,
+            spec::kMaxKernelTexels);
+  EXPECT_EQ(
+      load("moments linear\nstorage sat(int32)\nblocker moments\nkernel quadtree(height: 2, max: 96)").kernel.maxTexels,
+      96);
+  EXPECT_EQ(load("blocker search(16)").kernel.maxTexels, 64);
+  EXPECT_EQ(load("moments linear\nmips on").kernel.maxTexels, 64);
 }
 
 TEST(Combinations, UnrolledQuadtreeHeightLimit) {
@@ -198,7 +219,7 @@ TEST(SpecJson, FixedKeyOrderAndEveryField) {
   for (auto it = j.begin(); it != j.end(); ++it) keys.push_back(it.key());
   const std::vector<std::string> expected = {"name",      "light",   "representation",   "moments",  "storage",
                                              "prefilter", "blocker", "kernel",           "sampling", "bias",
-                                             "fallback",  "contact", "early_out_minmax", "map_size"};
+                                             "fallback",  "contact", "early_out_minmax", "backface", "map_size"};
   EXPECT_EQ(keys, expected);
   EXPECT_EQ(j["moments"].size(), 10u);
   EXPECT_EQ(j["kernel"].size(), 8u);

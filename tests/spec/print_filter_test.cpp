@@ -68,7 +68,7 @@ TEST(PrintFilterSibling, AnInvalidSpecPrintsToADescriptionTheCheckerRejects) {
 
 TEST(PrintFilter, WritesEveryArgumentNamed) {
   const std::string printed = printFilter(loadSample("vssm_adaptive"));
-  EXPECT_NE(printed.find("kernel     quadtree(height: 3, traversal: table, max: 64, lit_threshold: 0.0001)"),
+  EXPECT_NE(printed.find("kernel     quadtree(height: 3, traversal: table, max: 4096, lit_threshold: 0.0001)"),
             std::string::npos)
       << printed;
   EXPECT_NE(printed.find("storage    sat(kind: int32, format: fp32)"), std::string::npos) << printed;

@@ -79,6 +79,92 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
                                            light);
                          }));
 
+  // Kernels wider than an int32 box sum holds (issue 9 item 2): on a 1024^2 map with depths near
+  // 1 a box over 255^2 texels sums past 2^32 in 16.16, so sat.glsl cuts it into exact pieces of
+  // at most 255 texels a side. Receivers spread over the map under a light 40 wide. The naive row reads each box with
+  // one 4-corner difference (FilterSpec:: naiveUnguarded: SHADOWC_SAT_PIECES 1), as raising `max` without the pieces
+  // would. The subdivided filter has no PCF leaves: on this noise map a leaf's 2x2 taps are coin flips, and a kernel
+  // ~500 texels wide moves a tap by a texel when fp32 rounding of its width crosses .5 (measured: one receiver off by
+  // 3/16 with `fallback pcf(2x2)`; 1.8e-6 at max 255). Receivers 0.75..0.94 deep behind a map of 0.6..0.999 search the
+  // whole map (1024 texels).
+  std::vector<FilterSpec> wide = {
+      libraryFilter("vssm_one_box_max1024",
+                    "moments linear\nstorage sat(int32)\nblocker moments(none)\nkernel penumbra(max: 1024)"),
+      libraryFilter("vssm_uniform_max1024",
+                    "moments linear\nstorage sat(int32)\nblocker moments\n"
+                    "kernel uniform(2, max: 1024)\nfallback none"),
+      libraryFilter("vssm_bilinear_max1024",
+                    "moments linear\nstorage sat(int32, corners: bilinear)\n"
+                    "blocker moments(none)\nkernel penumbra(max: 1024)"),
+  };
+  FilterSpec wideNaive = libraryFilter("vssm_one_box_unpieced",
+                                       "moments linear\nstorage sat(int32)\n"
+                                       "blocker moments(none)\nkernel penumbra(max: 1024)");
+  wideNaive.naiveUnguarded = true;
+  wide.push_back(wideNaive);
+  out.push_back(makeCase("kernel_wider_than_int32_box",
+                         "1024x1024 map of depths 0.6..0.999, search regions of 1024 texels", wide, {},
+                         [](SuiteContext& ctx, const FilterSpec& s) {
+                           LightFrame light;
+                           light.lightWidth = 40;
+                           CaseResult r = bounded(s);
+                           r.naive = s.naiveUnguarded;
+                           std::vector<Receiver> rs;
+                           for (int i = 0; i < 24; ++i)
+                             rs.push_back(atTexel(1024, 40 + 41 * i, 1000 - 37 * i, 0.75 + 0.01 * (i % 20)));
+                           return evaluate(ctx, r, s, noiseMap(1024, 14, 0.6, 0.999), rs, light);
+                         }));
+
+  // The shadowing term where the whole light is behind the receiver's tangent plane (`backface
+  // shadowed`, shadowc_lookup.glsl): receivers on an empty map (depth 1: every receiver is lit)
+  // whose normals tilt away from the light's rectangle (width 2 at z = 0; receivers at x = 0,
+  // z = near + d (far - near)). A normal (sin a, 0, -cos a), a the tilt from the direction to the
+  // light, sees the light's edge x = +1 in front while sin a + z cos a > 0, i.e. up to
+  // a* = 90 deg + atan(1 / z): 2 degrees short of a* the reference is 1, 2 degrees past it 0
+  // (margins that keep fp32 from deciding). The naive row filters every receiver (`backface
+  // filtered`): the back-facing ones come out lit, off by 1.
+  std::vector<FilterSpec> facing = {libraryFilter("pcf_backface_shadowed", "depth\nsampling grid(3x3)"),
+                                    libraryFilter("vssm_backface_shadowed",
+                                                  "moments linear\nstorage sat(int32)\n"
+                                                  "blocker moments\nkernel uniform(4)")};
+  facing.push_back(libraryFilter("pcf_backface_filtered", "depth\nsampling grid(3x3)\nbackface filtered"));
+  out.push_back(
+      makeCase("light_behind_tangent_plane", "empty map, receivers tilted 2 deg short of / past the light's edge",
+               facing, {}, [](SuiteContext& ctx, const FilterSpec& s) {
+                 LightFrame light;
+                 light.lightWidth = 2;
+                 CaseResult r = bounded(s);
+                 r.naive = !s.backfaceShadowed;
+                 std::vector<Receiver> rs;
+                 std::vector<double> expected;  // the shadowing term, in closed form
+                 for (double d : {0.1, 0.4, 0.8}) {
+                   const double z = light.nearZ + d * (light.farZ - light.nearZ);
+                   const double edge = 0.5 * 3.14159265358979 + std::atan2(1.0, z);  // a*
+                   for (double k : {-1.0, 1.0}) {
+                     const double a = edge + k * 2.0 * 3.14159265358979 / 180.0;
+                     Receiver rc = atTexel(kMap, kMap / 2, 20 + 40 * d, d);
+                     rc.u = 0.5;  // x = 0 exactly
+                     rc.normal = std::array<double, 3>{std::sin(a), 0.0, -std::cos(a)};
+                     rs.push_back(rc);
+                     expected.push_back(k < 0 ? 1.0 : 0.0);
+                   }
+                 }
+                 r.filter = s.name;
+                 const CraftedResult run = runCrafted(ctx.vk, compileCached(s), constantMap(kMap, 1.0f), rs, light);
+                 countValues(r, run.visibility);
+                 r.worstError = 0;
+                 for (size_t i = 0; i < rs.size(); ++i) {
+                   const double e = std::fabs(double(run.visibility[i]) - expected[i]);
+                   if (!(e <= r.worstError)) {
+                     r.worstError = std::isnan(e) ? INFINITY : e;
+                     r.detail = fmt::format("worst: receiver {} (d {:.2g}, tilt {} a*) GPU {:.7g} vs {:.0f}", i,
+                                            rs[i].d, i % 2 ? "past" : "short of", run.visibility[i], expected[i]);
+                   }
+                 }
+                 settle(r);
+                 return r;
+               }));
+
   const std::vector<FilterSpec> one = {
       libraryFilter("vsm_sat_fixed1", "moments linear\nstorage sat(int32)\nkernel fixed(1)"),
       libraryFilter("pcf_grid1", "depth\nsampling grid(1x1)"),

@@ -7,6 +7,7 @@
 
 #include "plan/planner.h"
 #include "runtime/reference/cpu_filters.h"
+#include "spec/precision.h"
 
 namespace shadowc::validation {
 namespace {
@@ -77,10 +78,8 @@ class Evaluator {
     const double lightUV = g.lightWidth / (2 * light_.nearZ * light_.tanHalfFov);
     return clampTexels(lightUV * light_.nearZ * (g.zr - zb) / (zb * g.zr) * map_.size * scale_);
   }
-  double maxTexels() const {
-    const bool int32Sat = s_.representation == Representation::Moments && s_.storage.sat == SatKind::Int32;
-    return std::clamp(s_.kernel.maxTexels, 1.0, int32Sat ? 255.0 : 1e6);
-  }
+  // shade_plan.cpp's SHADOWC_KERNEL_MAX_TEXELS (int32 SATs sum wide boxes in pieces, sat.glsl).
+  double maxTexels() const { return std::clamp(s_.kernel.maxTexels, 1.0, spec::kMaxKernelTexels); }
   double clampTexels(double w) const { return w >= 1.0 ? std::min(w, maxTexels()) : 1.0; }
   std::array<int, 4> kernelRect(double cx, double cy, double w) const {
     const int n = int(clampTexels(w) + 0.5);
@@ -524,6 +523,14 @@ std::vector<double> IntentReference::operator()(const Receiver& r) const {
   g.cy = r.v * map.size;
   g.zr = std::max(p[2], light.nearZ);
   g.lightWidth = s.light.shape == LightShape::Point ? 0.0 : (s.light.sizeFromScene ? light.lightWidth : s.light.size);
+  // shadowc_lookup.glsl shadowc_lightBehind (spot frames): no point of the light's rectangle in
+  // front of the receiver's tangent plane -> the shadowing term's 0, before anything is read.
+  if (s.backfaceShadowed && r.normal) {
+    const auto& n = *r.normal;
+    const double front =
+        -(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) + 0.5 * g.lightWidth * (std::fabs(n[0]) + std::fabs(n[1]));
+    if (front <= 0) return {0.0};
+  }
   double bias = s.bias.constant;
   if (s.bias.kind == BiasKind::SlopeScaled) {
     std::array<double, 3> n;

@@ -27,11 +27,13 @@ constexpr const char* kModes = R"(
 difference of four large, nearly equal corner sums, and the rounding error of the corners
 (ulp of W^2 * 0.99 is 0.25 at 2048^2) divided by a small box area swamps the mean. Fix: the
 default SAT is int32 16.16 fixed point with wrap-around arithmetic: every box sum that fits in
-32 bits is exact modulo 2^32, so the only error left is the per-texel rounding to 2^-16; the
-compiler caps the kernel at 255 texels (255^2 * 65536 < 2^32, E0412). Centered fp32 (sums of
+32 bits is exact modulo 2^32, so the only error left is the per-texel rounding to 2^-16; a box
+wider than 255 texels (255^2 * 65536 < 2^32) is summed in exact pieces of at most 255 a side,
+added in float (`kernel_wider_than_int32_box`; its naive row reads the box in one piece and
+wraps). Centered fp32 (sums of
 v - 0.5) helps only when the values straddle 0.5; with depths near 1 it inherits most of the
 plain fp32 error: its rows are shown failing like plain fp32 (`sat_box_mean_*`; no row of this
-report is excused), and the checker's messages (E0412, W0504) no longer offer it as the precise
+report is excused), and the checker's message W0504 no longer offers it as the precise
 alternative. The int32 box means of x and x^2 each err by up to half a quantum, so
 E[x^2] - E[x]^2 errs by up to 3 * 2^-17 = 2.3e-5, more than the default minimum variance 1e-5:
 on small and flat boxes that noise decided Chebyshev (quadtree leaves of one texel: 0.0199;

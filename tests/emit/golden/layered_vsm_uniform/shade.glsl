@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#line 50
+#line 51
 const float shadowc_splitTable[5]= float[](0.0, 0.25, 0.5, 0.75, 1.0);
 #line 1 "frame.glsl"
 #line 20
@@ -231,13 +231,25 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 88
+#line 99
+bool shadowc_lightBehind(vec3 worldPos, vec3 worldNormal){
+  vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
+  vec3 n = mat3(shadowc_frame(). lightView)* worldNormal;
+  float h = 0.5 * shadowc_lightWidth();
+#line 109
+  return dot(n, - p)+ h *(abs(n . x)+ abs(n . y))<= 0.0;
+
+}
+#line 114
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
+
+  if(shadowc_lightBehind(worldPos, worldNormal))return 0.0;
+
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 105
+#line 134
   float v = shadowc_momentsTechnique(r);
-#line 115
+#line 144
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#line 40
+#line 41
 const vec2 shadowc_poissonPcf[16]= vec2[](vec2(- 0.0841346765, - 0.637574607), vec2(- 0.298654647, 0.909686429), vec2(0.909073413, 0.268397074), vec2(- 0.847625263, 0.0325486921), vec2(0.780809036, - 0.603617518), vec2(0.0369577091, 0.164983138), vec2(0.453231299, 0.888497225), vec2(- 0.694310779, - 0.627848962), vec2(0.519970057, - 0.103337728), vec2(- 0.35179077, - 0.179725706), vec2(- 0.44169117, 0.388021544), vec2(0.307776472, - 0.913085568), vec2(0.429814712, 0.400962943), vec2(0.0520009757, 0.645435175), vec2(0.952093652, - 0.19628198), vec2(- 0.871295919, 0.461486305));
 #line 1 "frame.glsl"
 #line 20
@@ -183,13 +183,25 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 88
+#line 99
+bool shadowc_lightBehind(vec3 worldPos, vec3 worldNormal){
+  vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
+  vec3 n = mat3(shadowc_frame(). lightView)* worldNormal;
+  float h = 0.5 * shadowc_lightWidth();
+#line 109
+  return dot(n, - p)+ h *(abs(n . x)+ abs(n . y))<= 0.0;
+
+}
+#line 114
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
+
+  if(shadowc_lightBehind(worldPos, worldNormal))return 0.0;
+
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 112
+#line 141
   float v = shadowc_pcf(r, 7.0);
-#line 115
+#line 144
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

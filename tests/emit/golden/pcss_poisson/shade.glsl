@@ -1,6 +1,6 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-#line 42
+#line 43
 const vec2 shadowc_poissonPcf[32]= vec2[](vec2(- 0.0841346765, - 0.637574607), vec2(- 0.298654647, 0.909686429), vec2(0.909073413, 0.268397074), vec2(- 0.847625263, 0.0325486921), vec2(0.780809036, - 0.603617518), vec2(0.0369577091, 0.164983138), vec2(0.453231299, 0.888497225), vec2(- 0.694310779, - 0.627848962), vec2(0.519970057, - 0.103337728), vec2(- 0.35179077, - 0.179725706), vec2(- 0.44169117, 0.388021544), vec2(0.307776472, - 0.913085568), vec2(0.429814712, 0.400962943), vec2(0.0520009757, 0.645435175), vec2(0.952093652, - 0.19628198), vec2(- 0.871295919, 0.461486305), vec2(0.113922792, - 0.252060138), vec2(- 0.404048443, - 0.910818834), vec2(0.720645251, 0.609744658), vec2(0.373048485, - 0.507597016), vec2(- 0.859507703, - 0.322146399), vec2(- 0.613262083, 0.720926204), vec2(- 0.0170520793, - 0.982231213), vec2(0.0273825855, 0.976643885), vec2(- 0.379473427, - 0.517019399), vec2(- 0.536449851, 0.0648677918), vec2(- 0.166350226, 0.462073235), vec2(- 0.252368084, 0.151256353), vec2(0.633120335, 0.203177418), vec2(0.554466486, - 0.773794902), vec2(0.704001422, - 0.342162973), vec2(0.331310386, 0.133089444));
 
 const vec2 shadowc_poissonBlocker[16]= vec2[](vec2(0.0958530825, - 0.595546058), vec2(0.33019398, 0.934204178), vec2(- 0.923934603, 0.307299889), vec2(0.870788861, 0.000214432748), vec2(- 0.752278945, - 0.583465332), vec2(- 0.134503773, 0.216850642), vec2(- 0.315759173, 0.852034183), vec2(0.648619334, - 0.711916121), vec2(0.416443818, 0.335460411), vec2(0.3979976, - 0.176631552), vec2(- 0.354441991, - 0.929124403), vec2(- 0.600433688, - 0.0948364334), vec2(0.812060969, 0.546462762), vec2(- 0.513792422, 0.45951067), vec2(- 0.255871891, - 0.344512652), vec2(0.0727314297, 0.577132379));
@@ -239,13 +239,25 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 88
+#line 99
+bool shadowc_lightBehind(vec3 worldPos, vec3 worldNormal){
+  vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
+  vec3 n = mat3(shadowc_frame(). lightView)* worldNormal;
+  float h = 0.5 * shadowc_lightWidth();
+#line 109
+  return dot(n, - p)+ h *(abs(n . x)+ abs(n . y))<= 0.0;
+
+}
+#line 114
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
+
+  if(shadowc_lightBehind(worldPos, worldNormal))return 0.0;
+
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 107
+#line 136
   float v = shadowc_pcss(r);
-#line 115
+#line 144
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -165,27 +165,29 @@ float shadowc_reduceBleeding(float p){
 }
 #line 32 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/sat.glsl"
-#line 25
+#line 27
 const float shadowc_satVarianceFloor = 2.4e-5;
-#line 31
+#line 33
 uvec4 shadowc_summedCorner(int x, int y, int layer){
   if(x < 0 || y < 0)return uvec4(0u);
   return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
 }
-#line 49
+#line 51
 vec4 shadowc_satMeanOfSum(uvec4 sum, float area){
 
   return vec4(sum)/(65536.0 * area);
-#line 57
+#line 59
 }
-#line 60
+#line 102
 vec4 shadowc_summedMean(ivec4 rect, int layer){
   float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
   area = max(area, 1.0);
+#line 108
                uvec4 sum = shadowc_summedCorner(rect . z, rect . w, layer)- shadowc_summedCorner(rect . x - 1, rect . w, layer)-
                        shadowc_summedCorner(rect . z, rect . y - 1, layer)+
                        shadowc_summedCorner(rect . x - 1, rect . y - 1, layer);
   return shadowc_satMeanOfSum(sum, area);
+
 }
 #line 43 "lookup/shadowc_lookup.glsl"
 
@@ -386,24 +388,26 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
                    uvec4 hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
       float area = float((x1 - x0)*(y1 - y0));
       vec4 box = vec4(x0, y0, x1, y1);
-      if(shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - lo1 + lo0, area), area)== 1)shadowc_qtResolveLeaf(box);
+      vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - lo1 + lo0, area);
+#line 206
+      if(shadowc_qtAccept(mean, area)== 1)shadowc_qtResolveLeaf(box);
       x0 = x1;
       lo0 = lo1;
       hi0 = hi1;
     }
   }
-#line 211
+#line 216
 }
-#line 220
+#line 225
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 223
+#line 228
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 232
+#line 237
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
   for(int step = 0;step < 85 && n . z > 0;++ step){
@@ -418,12 +422,12 @@ void shadowc_qtWalk(int height){
     n = shadowc_qtNextNode(n);
   }
 }
-#line 249
+#line 254
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 258
-  shadowc_uniformWalk(5, 0 != 0);
 #line 263
+  shadowc_uniformWalk(5, 0 != 0);
+#line 268
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -440,12 +444,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 281
+#line 286
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 287
+#line 292
   shadowc_qtWalk(3);
-#line 294
+#line 299
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -459,11 +463,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 325
+#line 330
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 331
+#line 336
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
@@ -491,20 +495,32 @@ ivec4 shadowc_influenceRect(shadowc_Receiver r){
   const int grow = 1 + 0;
   return ivec4(max(rect . xy - grow, ivec2(0)), min(rect . zw + grow, last));
 }
-#line 88
+#line 99
+bool shadowc_lightBehind(vec3 worldPos, vec3 worldNormal){
+  vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
+  vec3 n = mat3(shadowc_frame(). lightView)* worldNormal;
+  float h = 0.5 * shadowc_lightWidth();
+#line 109
+  return dot(n, - p)+ h *(abs(n . x)+ abs(n . y))<= 0.0;
+
+}
+#line 114
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
+
+  if(shadowc_lightBehind(worldPos, worldNormal))return 0.0;
+
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 93
+#line 122
   ivec4 rect = shadowc_influenceRect(r);
-#line 97
+#line 126
   vec2 span = vec2(r . d);
 
   float early = shadowc_earlyOut(rect, span . x, span . y);
   if(early >= 0.0)return early;
-#line 103
+#line 132
   float v = shadowc_vssm(r);
-#line 115
+#line 144
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"
