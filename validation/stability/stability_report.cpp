@@ -12,8 +12,7 @@ by hand. Every case runs the compiled passes of its filters on lavapipe, on a cr
 and receivers placed exactly (identity light view: a receiver at uv (u, v) and depth d sits at
 z = near + d (far - near), x = (2u - 1) z tanHalfFov; for a sun, x = (2u - 1) halfExtent; for a
 point light, by its light-view position, in the cube face of its major axis), and asserts: no
-NaN/Inf, every value in
-[0, 1], and the worst error against a double-precision reference of the filter's intent
+NaN/Inf, every value in [0, 1], and the worst error against a double-precision reference of the filter's intent
 (validation/stability/intent_reference.cpp: exact box means, double estimators, the same kernel
 geometry) within the bound written next to the case in the source, with its reason. Rows marked
 *naive* are the deliberately naive forms; they pass when they FAIL their case (the demonstration).
