@@ -45,14 +45,14 @@ FilterSpec specFromSource(const std::string& text, const std::string& name);
 // The projection of a crafted frame: the three forms of templates/frame*.glsl.
 enum class Projection { Spot, Sun, Point };
 
-struct LightFrame {
-  Projection projection = Projection::Spot;
+struct LightFrame {  // aggregate order kept: {tanHalfFov, near, far, lightWidth} (tests/gpu)
   // Spot: tan(half fov); Point: each cube face's tan(half fov) (the runtime's 1.5, kCubeTanHalf).
   double tanHalfFov = 1.0, nearZ = 1.0, farZ = 11.0;
   // World units (used by filters with `size: scene`). Sun: the penumbra slope 2 tan(angle / 2)
   // (frame_ortho.glsl, sunPenumbraSlope); Point: the sphere's diameter 2R (frame_cube.glsl).
   double lightWidth = 0.5;
   double halfExtent = 1.0;  // Sun: half the orthographic box's side (lightParams.x), world units
+  Projection projection = Projection::Spot;
 };
 LightFrame sunFrame(double halfExtent, double nearZ, double farZ, double angleDegrees);
 LightFrame pointFrame(double tanHalf, double nearZ, double farZ, double radius);
