@@ -29,9 +29,10 @@ DepthMap noiseMap(uint32_t size, uint64_t seed, double lo, double hi);
 DepthMap checkerMap(uint32_t size, float a, float b);
 
 // Runs the receivers, compares each with the intent reference (closest candidate), counts
-// NaN/Inf and out-of-range values. The caller sets bound, reason and naive first.
+// NaN/Inf and out-of-range values. The caller sets bound, reason and naive first. `form`: a
+// deliberately wrong reference (siblings).
 CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, const DepthMap& map,
-                    const std::vector<Receiver>& receivers, const LightFrame& light);
+                    const std::vector<Receiver>& receivers, const LightFrame& light, ReferenceForm form = {});
 
 // Counts non-finite and out-of-range values of `values` into r.
 void countValues(CaseResult& r, const std::vector<float>& values, double lo = 0.0, double hi = 1.0);
@@ -48,5 +49,6 @@ void addEarlyOutCases(std::vector<StabilityCase>& out);
 void addContactCases(std::vector<StabilityCase>& out);
 void addMsmCases(std::vector<StabilityCase>& out);
 void addCornerCases(std::vector<StabilityCase>& out);
+void addLightCases(std::vector<StabilityCase>& out);
 
 }  // namespace shadowc::validation

@@ -60,13 +60,35 @@ const CompiledFilter& compileCached(const FilterSpec& spec, bool naiveDemo) {
   return *(c.filters[key] = std::move(cf));
 }
 
+LightFrame sunFrame(double halfExtent, double nearZ, double farZ, double angleDegrees) {
+  LightFrame l;
+  l.projection = Projection::Sun;
+  l.halfExtent = halfExtent;
+  l.nearZ = nearZ;
+  l.farZ = farZ;
+  l.lightWidth = sunPenumbraSlope(angleDegrees);
+  return l;
+}
+
+LightFrame pointFrame(double tanHalf, double nearZ, double farZ, double radius) {
+  LightFrame l;
+  l.projection = Projection::Point;
+  l.tanHalfFov = tanHalf;
+  l.nearZ = nearZ;
+  l.farZ = farZ;
+  l.lightWidth = 2 * radius;
+  return l;
+}
+
 ShadowcFrame makeFrame(const LightFrame& light, uint32_t mapSize, uint32_t w, uint32_t h) {
   ShadowcFrame f{};
   for (int i = 0; i < 4; ++i) f.lightView[i * 5] = 1.0f;  // light view = world
-  f.lightParams[0] = float(light.tanHalfFov);
+  // runtime/scene/frame_setup.cpp: lightParams.x is the sun's halfExtent, else tan(half fov).
+  f.lightParams[0] = float(light.projection == Projection::Sun ? light.halfExtent : light.tanHalfFov);
   f.lightParams[1] = float(light.nearZ);
   f.lightParams[2] = float(light.farZ);
   f.lightParams[3] = float(light.lightWidth);
+  f.lightShape[0] = light.projection == Projection::Point ? 4.0f : light.projection == Projection::Sun ? 3.0f : 0.0f;
   f.mapInfo[0] = float(mapSize);
   f.mapInfo[1] = 1.0f / float(mapSize);
   f.screenInfo[0] = float(w);
@@ -77,14 +99,65 @@ ShadowcFrame makeFrame(const LightFrame& light, uint32_t mapSize, uint32_t w, ui
 }
 
 std::array<double, 3> receiverPosition(const LightFrame& light, const Receiver& r) {
+  if (r.position) return *r.position;
   const double z = light.nearZ + r.d * (light.farZ - light.nearZ);
-  return {(2 * r.u - 1) * z * light.tanHalfFov, (2 * r.v - 1) * z * light.tanHalfFov, z};
+  switch (light.projection) {
+    case Projection::Spot:
+      return {(2 * r.u - 1) * z * light.tanHalfFov, (2 * r.v - 1) * z * light.tanHalfFov, z};
+    case Projection::Sun:
+      return {(2 * r.u - 1) * light.halfExtent, (2 * r.v - 1) * light.halfExtent, z};
+    case Projection::Point:
+      break;
+  }
+  throw std::runtime_error("a point light's receiver needs its position (cubeReceiver)");
 }
 
 double gpuReceiverDepth(const LightFrame& light, const Receiver& r) {
-  const float z = float(receiverPosition(light, r)[2]);
+  const auto p = receiverPosition(light, r);
+  float z = float(p[2]);
+  if (light.projection == Projection::Point) {  // frame_cube.glsl: the face's z, from fp32 p
+    const std::array<float, 3> pf = {float(p[0]), float(p[1]), float(p[2])};
+    const std::array<float, 3> q = {std::fabs(pf[0]), std::fabs(pf[1]), std::fabs(pf[2])};
+    const int a = (q[0] >= q[1] && q[0] >= q[2]) ? 0 : (q[1] >= q[2] ? 1 : 2);
+    z = std::max(pf[a] < 0 ? -pf[a] : pf[a], 1e-20f);
+  }
   const float n = float(light.nearZ), f = float(light.farZ);
   return double((z - n) / (f - n));
+}
+
+int cubeFace(const std::array<double, 3>& p) {
+  const double q[3] = {std::fabs(p[0]), std::fabs(p[1]), std::fabs(p[2])};
+  const int a = (q[0] >= q[1] && q[0] >= q[2]) ? 0 : (q[1] >= q[2] ? 1 : 2);
+  return 2 * a + (p[a] < 0 ? 1 : 0);
+}
+
+std::array<double, 3> cubeFaceCoords(int face, const std::array<double, 3>& p) {
+  const int a = face / 2;
+  const double s = (face % 2) ? -1.0 : 1.0;
+  return {p[(a + 1) % 3], p[(a + 2) % 3], s * p[a]};
+}
+
+std::array<double, 3> cubeFromFace(int face, const std::array<double, 3>& q) {
+  const int a = face / 2;
+  const double s = (face % 2) ? -1.0 : 1.0;
+  std::array<double, 3> p{};
+  p[(a + 1) % 3] = q[0];
+  p[(a + 2) % 3] = q[1];
+  p[a] = s * q[2];
+  return p;
+}
+
+Receiver cubeReceiver(const LightFrame& light, uint32_t mapSize, const std::array<double, 3>& p, int face) {
+  const int f = face < 0 ? cubeFace(p) : face;
+  const auto q = cubeFaceCoords(f, p);
+  const double z = std::max(q[2], 1e-20);
+  const double cell = double(mapSize / 3) / double(mapSize);
+  Receiver r;
+  r.u = (f % 3 + 0.5 + 0.5 * q[0] / (z * light.tanHalfFov)) * cell;
+  r.v = (f / 3 + 0.5 + 0.5 * q[1] / (z * light.tanHalfFov)) * cell;
+  r.d = (z - light.nearZ) / (light.farZ - light.nearZ);
+  r.position = p;
+  return r;
 }
 
 CraftedResult runCrafted(rt::VulkanContext& ctx, const CompiledFilter& filter, const DepthMap& map,
@@ -98,6 +171,8 @@ CraftedResult runCrafted(rt::VulkanContext& ctx, const CompiledFilter& filter, c
     std::array<double, 3> n;
     if (receivers[i].normal) {
       n = *receivers[i].normal;
+    } else if (light.projection == Projection::Sun) {
+      n = {0.0, 0.0, -1.0};  // facing the sun
     } else {
       const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
       n = {-p[0] / len, -p[1] / len, -p[2] / len};

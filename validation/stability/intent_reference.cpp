@@ -59,24 +59,54 @@ using Box = std::array<double, 4>;
 struct Geometry {
   double t;       // biased receiver depth (fp32-emulated receiver depth minus bias)
   double cx, cy;  // continuous texel coordinates
-  double zr;      // view z of the receiver
+  double zr;      // view z of the receiver (a point light: its face's z)
   double lightWidth;
 };
+
+// shade_plan.cpp's SHADOWC_SUN_BOX_SCALE: the box standing for the sun's disk (same second
+// moment, side D sqrt(3) / 2); Poisson taps of the depth representation keep the diameter.
+double sunBoxScale(const FilterSpec& s) {
+  const bool diskTaps = s.representation == Representation::Depth && s.sampling.pattern == PcfPattern::Poisson;
+  return diskTaps ? 1.0 : std::sqrt(3.0) / 2.0;
+}
+// shade_plan.cpp's SHADOWC_CUBE_KERNEL_MAX (face uv): what the guard band holds.
+double cubeKernelMax(const FilterSpec& s) { return s.prefilter.mips ? 1.0 / 18.0 : 0.25; }
 
 class Evaluator {
  public:
   Evaluator(const FilterSpec& s, const DepthMap& map, const LightFrame& light, double widthScale,
-            const MomentsField* field)
-      : s_(s), map_(map), light_(light), scale_(widthScale), field_(field) {}
+            const MomentsField* field, bool perspectiveWidths)
+      : s_(s),
+        map_(map),
+        light_(light),
+        scale_(widthScale),
+        field_(field),
+        form_(perspectiveWidths ? Projection::Spot : light.projection) {}
 
-  double searchTexels(const Geometry& g) const {
-    const double lightUV = g.lightWidth / (2 * light_.nearZ * light_.tanHalfFov);
-    return clampTexels(lightUV * (g.zr - light_.nearZ) / g.zr * map_.size * scale_);
+  // lightParams.x: tan(half fov), or a sun's halfExtent (what a spot-compiled lookup reads as tan).
+  double paramX() const { return light_.projection == Projection::Sun ? light_.halfExtent : light_.tanHalfFov; }
+  // frame_cube.glsl shadowc_cubeWidthUV: face uv -> atlas uv, clamped to the guard band.
+  double cubeWidth(double faceUV) const {
+    return std::min(faceUV, cubeKernelMax(s_)) * double(map_.size / 3) / double(map_.size);
   }
+  // Width in uv of the blocker search (frame.glsl / frame_ortho.glsl / frame_cube.glsl).
+  double searchUV(const Geometry& g) const {
+    const double n = light_.nearZ;
+    if (form_ == Projection::Sun) return g.lightWidth * std::max(g.zr - n, 0.0) / (2 * light_.halfExtent);
+    const double perspective = g.lightWidth / (2 * n * paramX()) * (g.zr - n) / g.zr;
+    return form_ == Projection::Point ? cubeWidth(perspective) : perspective;
+  }
+  double penumbraUV(const Geometry& g, double zb) const {
+    const double n = light_.nearZ;
+    if (form_ == Projection::Sun)
+      return sunBoxScale(s_) * g.lightWidth * std::max(g.zr - zb, 0.0) / (2 * light_.halfExtent);
+    const double perspective = g.lightWidth / (2 * n * paramX()) * n * (g.zr - zb) / (zb * g.zr);
+    return form_ == Projection::Point ? cubeWidth(perspective) : perspective;
+  }
+  double searchTexels(const Geometry& g) const { return clampTexels(searchUV(g) * map_.size * scale_); }
   double penumbraTexels(const Geometry& g, double zBlocker) const {
     const double zb = std::max(light_.nearZ + clamp01(zBlocker) * (light_.farZ - light_.nearZ), light_.nearZ);
-    const double lightUV = g.lightWidth / (2 * light_.nearZ * light_.tanHalfFov);
-    return clampTexels(lightUV * light_.nearZ * (g.zr - zb) / (zb * g.zr) * map_.size * scale_);
+    return clampTexels(penumbraUV(g, zb) * map_.size * scale_);
   }
   // shade_plan.cpp's SHADOWC_KERNEL_MAX_TEXELS (int32 SATs sum wide boxes in pieces, sat.glsl).
   double maxTexels() const { return std::clamp(s_.kernel.maxTexels, 1.0, spec::kMaxKernelTexels); }
@@ -355,6 +385,22 @@ class Evaluator {
       const double w = penumbra ? searchTexels(g) : s_.kernel.fixedTexels;
       return unit(filteredVisibility(g, kernelBox(g.cx, g.cy, w), g.t));
     }
+    if (tech == 1) {  // pcss.glsl: grid blocker search, the penumbra estimate, grid PCF
+      const double ws = searchTexels(g);
+      const int n = std::max(1, int(std::lround(std::sqrt(double(std::max(1, s_.blocker.taps))))));
+      double sum = 0, count = 0;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const double px = g.cx + (i + 0.5 - 0.5 * n) * (ws / n), py = g.cy + (j + 0.5 - 0.5 * n) * (ws / n);
+          const double z = map_.at(int(std::floor(px)), int(std::floor(py)));
+          if (z < g.t) {
+            sum += z;
+            count += 1;
+          }
+        }
+      if (!(count > 0)) return 1;
+      return pcfGrid(g.cx, g.cy, penumbraTexels(g, sum / count), g.t, std::max(1, s_.sampling.gridN));
+    }
     // Depth representation, grid pattern, fixed kernel or the whole search region.
     const double w = penumbra ? searchTexels(g) : s_.kernel.fixedTexels;
     return pcfGrid(g.cx, g.cy, w, g.t, std::max(1, s_.sampling.gridN));
@@ -366,6 +412,7 @@ class Evaluator {
   LightFrame light_;
   double scale_;
   const MomentsField* field_;
+  Projection form_;  // the width formulas' projection
 };
 
 }  // namespace
@@ -496,15 +543,38 @@ bool intentModels(const FilterSpec& s) {
   if (s.contact.enabled || s.bias.kind == BiasKind::NormalOffset || s.bias.kind == BiasKind::ReceiverPlane)
     return false;
   if (s.representation == Representation::Depth)
-    return s.sampling.pattern == PcfPattern::Grid && s.blocker.kind == BlockerKind::None;
+    return s.sampling.pattern == PcfPattern::Grid &&
+           (s.blocker.kind == BlockerKind::None ||
+            (s.blocker.kind == BlockerKind::Search && s.blocker.pattern == SamplePattern::Grid));
   if (s.prefilter.mips && s.storage.sat == SatKind::None) return false;
   if (s.moments.layers > 1 && s.moments.split == SplitPlacement::Lloyd) return false;
   if (s.blocker.kind == BlockerKind::Search) return false;
   return true;
 }
 
-IntentReference::IntentReference(const FilterSpec& spec, const DepthMap& map, const LightFrame& light)
-    : spec_(spec), map_(map), light_(light) {
+// shadowc_lookup.glsl shadowc_lightBehind, in double: the light width the shader reads (folded or
+// the frame's), h = half of it; spot: the rectangle in the light view's z = 0 plane; sun: the cap
+// of half-angle atan(h) around -z; point: the sphere of radius h at the origin.
+static bool lightBehind(const FilterSpec& s, const LightFrame& light, const std::array<double, 3>& p,
+                        const std::array<double, 3>& n) {
+  const bool sun = light.projection == Projection::Sun, cube = light.projection == Projection::Point;
+  double w = light.lightWidth;
+  if (!s.light.sizeFromScene)
+    w = sun                                          ? sunPenumbraSlope(s.light.angleDegrees)
+        : (cube || s.light.type == LightType::Point) ? 2 * s.light.size
+        : s.light.shape == LightShape::Point         ? 0.0
+                                                     : s.light.size;
+  const double h = 0.5 * w;
+  const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+  const double toLight = -(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]);
+  if (sun) return len > 0 && n[2] >= len * h / std::sqrt(1 + h * h);
+  if (cube) return toLight + h * len <= 0;
+  return toLight + h * (std::fabs(n[0]) + std::fabs(n[1])) <= 0;
+}
+
+IntentReference::IntentReference(const FilterSpec& spec, const DepthMap& map, const LightFrame& light,
+                                 ReferenceForm form)
+    : spec_(spec), map_(map), light_(light), form_(form) {
   if (intentModels(spec) && spec.representation == Representation::Moments)
     field_ = std::make_unique<MomentsField>(spec, map);
 }
@@ -515,38 +585,45 @@ std::vector<double> IntentReference::operator()(const Receiver& r) const {
   const DepthMap& map = map_;
   const LightFrame& light = light_;
   if (!intentModels(s)) return {};
+  const auto p = receiverPosition(light, r);
+  const bool sun = light.projection == Projection::Sun, cube = light.projection == Projection::Point;
+  // shadowc_lookup.glsl shadowc_lightBehind: no part of the light in front of the receiver's
+  // tangent plane -> the shadowing term's 0, before anything else (even outside the frustum).
+  if (s.backfaceShadowed && r.normal && lightBehind(s, light, p, *r.normal)) return {0.0};
   // Outside the shadow map's frustum nothing was rendered that could shadow it (lit).
   if (!(r.u >= 0 && r.u <= 1 && r.v >= 0 && r.v <= 1)) return {1.0};
-  const auto p = receiverPosition(light, r);
   Geometry g;
-  g.cx = r.u * map.size;
-  g.cy = r.v * map.size;
-  g.zr = std::max(p[2], light.nearZ);
-  g.lightWidth = s.light.shape == LightShape::Point ? 0.0 : (s.light.sizeFromScene ? light.lightWidth : s.light.size);
-  // shadowc_lookup.glsl shadowc_lightBehind (spot frames): no point of the light's rectangle in
-  // front of the receiver's tangent plane -> the shadowing term's 0, before anything is read.
-  if (s.backfaceShadowed && r.normal) {
-    const auto& n = *r.normal;
-    const double front =
-        -(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) + 0.5 * g.lightWidth * (std::fabs(n[0]) + std::fabs(n[1]));
-    if (front <= 0) return {0.0};
+  double u = r.u, v = r.v;
+  if (cube && form_.mirroredCubeFace) {  // the same face-local uv in the opposite face's cell
+    const int f = cubeFace(p), m = f ^ 1;
+    const double cell = double(map.size / 3) / double(map.size);
+    u += (m % 3 - f % 3) * cell;
+    v += (m / 3 - f / 3) * cell;
   }
+  g.cx = u * map.size;
+  g.cy = v * map.size;
+  g.zr = std::max(cube ? cubeFaceCoords(cubeFace(p), p)[2] : p[2], light.nearZ);
+  if (sun)
+    g.lightWidth = s.light.sizeFromScene ? light.lightWidth : sunPenumbraSlope(s.light.angleDegrees);
+  else if (cube || s.light.type == LightType::Point)
+    g.lightWidth = s.light.sizeFromScene ? light.lightWidth : 2 * s.light.size;
+  else
+    g.lightWidth = s.light.shape == LightShape::Point ? 0.0 : (s.light.sizeFromScene ? light.lightWidth : s.light.size);
   double bias = s.bias.constant;
   if (s.bias.kind == BiasKind::SlopeScaled) {
-    std::array<double, 3> n;
-    const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-    if (r.normal)
-      n = *r.normal;
-    else
-      n = {-p[0] / len, -p[1] / len, -p[2] / len};
-    const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * len;
-    const double ndotl = nl > 0 ? clamp01(-(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]) / nl) : 0.0;
+    // L: towards the light's centre (spot, point; bias.glsl), or -z for a sun (its ortho form).
+    std::array<double, 3> l = {-p[0], -p[1], -p[2]};
+    if (sun) l = {0.0, 0.0, -1.0};
+    const double llen = std::sqrt(l[0] * l[0] + l[1] * l[1] + l[2] * l[2]);
+    std::array<double, 3> n = r.normal ? *r.normal : std::array<double, 3>{l[0] / llen, l[1] / llen, l[2] / llen};
+    const double nl = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]) * llen;
+    const double ndotl = nl > 0 ? clamp01((n[0] * l[0] + n[1] * l[1] + n[2] * l[2]) / nl) : 0.0;
     bias = std::max(s.bias.slope * (1 - ndotl), s.bias.constant);
   }
   g.t = gpuReceiverDepth(light, r) - bias;
   std::vector<double> out;
   for (double scale : {1.0, 1.0 + 2e-4, 1.0 - 2e-4}) {
-    const double v = Evaluator(s, map, light, scale, field_.get()).visibility(g);
+    const double v = Evaluator(s, map, light, scale, field_.get(), form_.perspectiveWidths).visibility(g);
     if (std::none_of(out.begin(), out.end(), [&](double o) { return o == v; })) out.push_back(v);
   }
   return out;

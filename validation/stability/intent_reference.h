@@ -36,14 +36,26 @@ struct MomentsField {
   std::vector<double> prefix_;   // (size+1)^2 * layers * 4 inclusive prefix sums of raw_
 };
 
+// Deliberately wrong forms of the reference, for the siblings that prove a check can fail.
+struct ReferenceForm {
+  // Kernel widths by the spot's perspective formulas (frame.glsl) whatever the frame's
+  // projection, with lightParams.x as tan(half fov): what a spot-compiled lookup computes.
+  bool perspectiveWidths = false;
+  // Point light: read the receiver's face-local uv in the cell of the opposite face (f ^ 1).
+  bool mirroredCubeFace = false;
+};
+
 // The reference for one (filter, map, frame): the moments field is built once.
 // operator() gives the reference values for one receiver: usually one; two or three where a
 // kernel width lies within 2e-4 (relative) of a texel rounding boundary and fp32 may round either
 // way. Empty when the reference does not model the filter (mips, Poisson taps, PCSS search,
-// contact path, Lloyd splits, normal offset).
+// contact path, Lloyd splits, normal offset). Kernel widths take the form of the frame's
+// projection: frame.glsl (spot), frame_ortho.glsl (sun), frame_cube.glsl (point, in the
+// receiver's face, clamped to SHADOWC_CUBE_KERNEL_MAX); a PCSS with a grid blocker search and
+// grid PCF (pcss.glsl) is modelled, a Poisson one is not.
 class IntentReference {
  public:
-  IntentReference(const FilterSpec& spec, const DepthMap& map, const LightFrame& light);
+  IntentReference(const FilterSpec& spec, const DepthMap& map, const LightFrame& light, ReferenceForm form = {});
   ~IntentReference();
   std::vector<double> operator()(const Receiver& receiver) const;
 
@@ -51,6 +63,7 @@ class IntentReference {
   FilterSpec spec_;
   const DepthMap& map_;
   LightFrame light_;
+  ReferenceForm form_;
   std::unique_ptr<MomentsField> field_;
 };
 

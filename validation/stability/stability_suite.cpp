@@ -71,12 +71,12 @@ void settle(CaseResult& r) {
 }
 
 CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, const DepthMap& map,
-                    const std::vector<Receiver>& receivers, const LightFrame& light) {
+                    const std::vector<Receiver>& receivers, const LightFrame& light, ReferenceForm form) {
   r.filter = spec.name;
   const CompiledFilter& cf = compileCached(spec, r.naive);
   const CraftedResult run = runCrafted(ctx.vk, cf, map, receivers, light);
   countValues(r, run.visibility);
-  const IntentReference reference(spec, map, light);
+  const IntentReference reference(spec, map, light, form);
   r.worstError = intentModels(spec) ? 0.0 : NAN;
   for (size_t i = 0; i < receivers.size(); ++i) {
     const std::vector<double> ref = reference(receivers[i]);
@@ -131,6 +131,7 @@ const std::vector<StabilityCase>& stabilityCases() {
     addEarlyOutCases(out);
     addContactCases(out);
     addMsmCases(out);
+    addLightCases(out);
     return out;
   }();
   return cases;
