@@ -74,10 +74,29 @@ def filter_entry(path, light_type):
     return entry
 
 
+# Issue 9's RMSE bounds for the best VSSM sample with PCF fallback (256^2 screen, 1024^2 map, 16^2 reference).
+TARGETS = [("two_planes", 0.03), ("large_penumbra", 0.03), ("small_penumbra", 0.03), ("thin_occluders", 0.03),
+           ("contact", 0.05), ("overlapping_occluders", 0.05), ("duck", 0.05), ("mesh", 0.05), ("spider", 0.05),
+           ("engine", 0.05)]
+
+# Reference filters run beside the samples on the spot scenes (names start with "ref_"; not in the sample
+# tables). ref_pcss_dense is the model floor of the single-depth-map average-blocker family that VSSM
+# approximates: PCSS with an 8x8 grid blocker search and a 16x16 grid of depth tests over the penumbra
+# kernel (the language's densest), the kernel uncapped, the samples' receiver-plane bias and normal offset.
+# ref_pcss_taps_T: PCSS with T Poisson taps, uncapped, the tap count that matches VSSM's error.
+REF_BIAS = "receiver_plane(constant: 0.001, normal_offset: 2)"
+REF_FILTERS = [{"name": "ref_pcss_dense", "text": "filter ref_pcss_dense {\n light area(size: scene)\n depth\n"
+                " blocker search(64, pattern: grid)\n kernel penumbra(max: 4096)\n sampling grid(16x16)\n"
+                " bias " + REF_BIAS + "\n}\n"}] + [
+    {"name": "ref_pcss_taps_{}".format(t), "text": "filter ref_pcss_taps_{0} {{\n light area(size: scene)\n depth\n"
+     " blocker search({0}, pattern: poisson)\n kernel penumbra(max: 4096)\n sampling poisson({0}, rotate: stable)\n"
+     " bias {1}\n}}\n".format(t, REF_BIAS)} for t in (4, 16, 64)]
+
+
 def sweep_description(a, scenes, filters, light_type):
     return {
         "name": "accuracy" if light_type == "spot" else "accuracy-" + light_type,
-        "filters": [filter_entry(f, light_type) for f in filters],
+        "filters": [filter_entry(f, light_type) for f in filters] + (REF_FILTERS if light_type == "spot" else []),
         "scenes": scenes,
         "screen": a.size,
         "map": a.map,
@@ -126,7 +145,8 @@ def run(a, scenes, filters):
 
 
 def section(res, folder, seconds, a, doc_dir):
-    rows = res["rows"]
+    refs = [r for r in res["rows"] if r["base"].startswith("ref_")]
+    rows = [r for r in res["rows"] if not r["base"].startswith("ref_")]
     samples, scenes = [], []
     for r in rows:
         if r["base"] not in samples:
@@ -213,7 +233,132 @@ def section(res, folder, seconds, a, doc_dir):
         shutil.copy(src, os.path.join(img_dir, name))
         out.append("- `{}`: {} (RMSE {:.4f}) ![{} error](accuracy/{})".format(sc, r["base"], r["metrics"]["rmse"], sc,
                                                                             name))
+    out += [""] + targets(rows, refs, img_dir)
     return "\n".join(out) + "\n"
+
+
+def read_gray_png(path):
+    """An 8-bit grayscale, non-interlaced PNG (what runtime/images/png_image.h writes) as a list of rows of
+    values in [0, 1]; the standard library only (zlib and the five PNG row filters)."""
+    import struct
+    import zlib
+    with open(path, "rb") as f:
+        data = f.read()
+    pos, idat, width, height = 8, b"", 0, 0
+    while pos < len(data):
+        length, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        chunk = data[pos + 8:pos + 8 + length]
+        if kind == b"IHDR":
+            width, height, depth, color = struct.unpack(">IIBB", chunk[:10])
+            if depth != 8 or color != 0:
+                raise ValueError("{}: not 8-bit grayscale".format(path))
+        elif kind == b"IDAT":
+            idat += chunk
+        pos += 12 + length
+    raw, rows, prev = zlib.decompress(idat), [], [0] * width
+    for y in range(height):
+        ft, line = raw[y * (width + 1)], list(raw[y * (width + 1) + 1:(y + 1) * (width + 1)])
+        for x in range(width):
+            a = line[x - 1] if x else 0
+            b, c = prev[x], prev[x - 1] if x else 0
+            if ft == 1:
+                line[x] = (line[x] + a) & 255
+            elif ft == 2:
+                line[x] = (line[x] + b) & 255
+            elif ft == 3:
+                line[x] = (line[x] + (a + b) // 2) & 255
+            elif ft == 4:
+                pa, pb, pc = abs(b - c), abs(a - c), abs(a + b - 2 * c)
+                line[x] = (line[x] + (a if pa <= pb and pa <= pc else b if pb <= pc else c)) & 255
+        rows.append([v / 255.0 for v in line])
+        prev = line
+    return rows
+
+
+def error_split(row):
+    """Where a row's squared error lies, by the reference's value (umbra < 0.05, lit > 0.95, penumbra between),
+    from its result and reference images (8-bit: a breakdown, not a measurement to 1e-3), and the penumbra's
+    mean signed error (> 0: too bright)."""
+    def path(p):
+        return p if os.path.isabs(p) else os.path.join(row["_folder"], p)
+    res, ref = read_gray_png(path(row["images"]["result"])), read_gray_png(path(row["images"]["reference"]))
+    sq = {"umbra": 0.0, "penumbra": 0.0, "lit": 0.0}
+    signed, n = 0.0, 0
+    for rr, fr in zip(res, ref):
+        for v, t in zip(rr, fr):
+            k = "umbra" if t < 0.05 else "lit" if t > 0.95 else "penumbra"
+            sq[k] += (v - t) ** 2
+            if k == "penumbra":
+                signed += v - t
+                n += 1
+    total = sum(sq.values()) or 1.0
+    return {k: v / total for k, v in sq.items()}, (signed / n if n else 0.0)
+
+
+def is_vssm_with_fallback(r):
+    spec = r.get("spec") or {}
+    if isinstance(spec, str):
+        spec = json.loads(spec)
+    return spec.get("blocker", {}).get("kind") == "moments" and spec.get("fallback", {}).get("pcf") is True
+
+
+def targets(rows, refs, img_dir):
+    """Issue 9's first done-when: per target scene the best VSSM sample with PCF fallback against its bound,
+    the model floor (ref_pcss_dense) beside it, and for a missed bound the error image of that row."""
+    ref = {(r["base"], r["scene"]): r["metrics"]["rmse"] for r in refs}
+    out = ["### Issue 9 targets (generated)", "",
+           "The best VSSM sample with PCF fallback per scene (samples whose spec has `blocker moments` and "
+           "`fallback pcf`), against issue 9's bound, beside `ref_pcss_dense`: PCSS with an 8×8 grid blocker "
+           "search and 16×16 grid depth tests over the uncapped penumbra kernel, the samples' receiver-plane bias "
+           "(the densest PCSS the language has: the single-depth-map, average-blocker model that VSSM's eq. 4 and "
+           "box filter approximate, with next to no sampling error). Where both miss the bound the cause is that "
+           "model, not its sampling: one blocker depth per receiver and a box kernel, exact only for planar "
+           "occluders parallel to light and receiver (vssm-yang2010 sec. 3; pcss-blog.txt); the split below says "
+           "where the error lies (from the 8-bit result and reference images). Error image of each missed row "
+           "below.", "",
+           "| scene | bound | best VSSM sample with fallback | its RMSE | met | ref_pcss_dense |",
+           "|---|---:|---|---:|---|---:|"]
+    images = []
+    for old in glob.glob(os.path.join(img_dir, "target_*.png")):
+        os.remove(old)
+    for sc, bound in TARGETS:
+        cands = [r for r in rows if r["scene"] == sc and is_vssm_with_fallback(r) and r["metrics"].get("rmse") is not None]
+        if not cands:
+            continue
+        best = min(cands, key=lambda r: r["metrics"]["rmse"])
+        e = best["metrics"]["rmse"]
+        floor = ref.get(("ref_pcss_dense", sc))
+        met = e <= bound
+        out.append("| {} | {} | {} | {:.4f} | {} | {} |".format(sc, bound, best["base"], e, "yes" if met else "**no**",
+                                                              "—" if floor is None else "{:.4f}".format(floor)))
+        if not met:
+            src = best["images"]["error"]
+            if not os.path.isabs(src):
+                src = os.path.join(best["_folder"], src)
+            name = "target_{}.png".format(sc)
+            shutil.copy(src, os.path.join(img_dir, name))
+            why = ("the dense PCSS misses it too, {:.4f}".format(floor) if floor is not None and floor > bound
+                   else "the dense PCSS meets it, {:.4f}: VSSM's approximation of that model".format(floor)
+                   if floor is not None else "no dense PCSS row")
+            split, bias = error_split(best)
+            images.append("- `{}`: {}, RMSE {:.4f} ({}); squared error in penumbra / lit / umbra pixels "
+                          "{:.0%} / {:.0%} / {:.0%}, penumbra mean error {:+.3f} ({}) ![{} target](accuracy/{})".format(
+                              sc, best["base"], e, why, split["penumbra"], split["lit"], split["umbra"], bias,
+                              "too bright" if bias > 0 else "too dark", sc, name))
+    out += [""] + images
+    taps = [(int(k[0].rsplit("_", 1)[1]), v) for k, v in ref.items()
+            if k[0].startswith("ref_pcss_taps_") and k[1] == "large_penumbra"]
+    vssm = [r for r in rows if r["scene"] == "large_penumbra" and r["base"].startswith("vssm")
+            and r["metrics"].get("rmse") is not None]
+    if taps and vssm:
+        best = min(vssm, key=lambda r: r["metrics"]["rmse"])
+        out += ["", "PCSS taps against VSSM on `large_penumbra` (uncapped kernels, the samples' receiver-plane "
+                "bias): " + ", ".join("{} taps {:.4f}".format(t, v) for t, v in sorted(taps)) +
+                "; the best VSSM sample, {}, {:.4f}; the dense reference {}.".format(
+                    best["base"], best["metrics"]["rmse"],
+                    "{:.4f}".format(ref[("ref_pcss_dense", "large_penumbra")])
+                    if ("ref_pcss_dense", "large_penumbra") in ref else "—")]
+    return out
 
 
 def replace_section(text, body):
