@@ -34,6 +34,11 @@ DepthMap checkerMap(uint32_t size, float a, float b);
 CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, const DepthMap& map,
                     const std::vector<Receiver>& receivers, const LightFrame& light, ReferenceForm form = {});
 
+// The bound of a filter against the intent reference, by what it computes: fp32 evaluation of the
+// same formulas; int32 SATs add the 16.16 quantization of the means (cases_estimator.cpp); PCF
+// counts are exact (ties are avoided by the cases' random depths).
+CaseResult bounded(const FilterSpec& s);
+
 // Counts non-finite and out-of-range values of `values` into r.
 void countValues(CaseResult& r, const std::vector<float>& values, double lo = 0.0, double hi = 1.0);
 

@@ -13,23 +13,6 @@ namespace {
 
 constexpr uint32_t kMap = 128;
 
-// fp32 evaluation of the same formulas; int32 SATs add the 16.16 quantization of the means
-// (cases_estimator.cpp); PCF counts are exact (ties are avoided by the map's random depths).
-CaseResult bounded(const FilterSpec& s) {
-  CaseResult r;
-  if (hasSat(s)) {
-    r.bound = 5e-4;
-    r.boundReason = "16.16 quantization of the mean moves Chebyshev by ~2e-3 p";
-  } else if (isMoments(s)) {
-    r.bound = 1e-4;
-    r.boundReason = "same formula in fp32: ~1e-7 per moment x condition <= 1e3";
-  } else {
-    r.bound = 1e-6;
-    r.boundReason = "PCF: exact counts, fp32 division";
-  }
-  return r;
-}
-
 std::vector<Receiver> borderReceivers(uint32_t size, double d) {
   std::vector<Receiver> rs;
   const double last = size - 1;

@@ -37,23 +37,6 @@ std::vector<FilterSpec> withTwin(std::vector<FilterSpec> filters, const std::str
   return filters;
 }
 
-// As cases_geometry.cpp: fp32 evaluation of the same formulas; int32 SATs add the 16.16
-// quantization of the means; PCF counts are exact.
-CaseResult bounded(const FilterSpec& s) {
-  CaseResult r;
-  if (hasSat(s)) {
-    r.bound = 5e-4;
-    r.boundReason = "16.16 quantization of the mean moves Chebyshev by ~2e-3 p";
-  } else if (isMoments(s)) {
-    r.bound = 1e-4;
-    r.boundReason = "same formula in fp32: ~1e-7 per moment x condition <= 1e3";
-  } else {
-    r.bound = 1e-6;
-    r.boundReason = "PCF: exact counts, fp32 division";
-  }
-  return r;
-}
-
 // ---- sun ---------------------------------------------------------------------------------------
 
 const char* const kSunPcf = "light sun(angle: scene)\ndepth\nsampling grid(5x5)";

@@ -55,6 +55,21 @@ bool isMoments(const FilterSpec& s) { return s.representation == Representation:
 bool isVssm(const FilterSpec& s) { return isMoments(s) && s.blocker.kind == BlockerKind::Moments; }
 bool hasSat(const FilterSpec& s) { return isMoments(s) && s.storage.sat != SatKind::None; }
 
+CaseResult bounded(const FilterSpec& s) {
+  CaseResult r;
+  if (hasSat(s)) {
+    r.bound = 5e-4;
+    r.boundReason = "16.16 quantization of the mean moves Chebyshev by ~2e-3 p";
+  } else if (isMoments(s)) {
+    r.bound = 1e-4;
+    r.boundReason = "same formula in fp32: ~1e-7 per moment x condition <= 1e3";
+  } else {
+    r.bound = 1e-6;
+    r.boundReason = "PCF: exact counts, fp32 division";
+  }
+  return r;
+}
+
 void countValues(CaseResult& r, const std::vector<float>& values, double lo, double hi) {
   for (float v : values) {
     ++r.values;
