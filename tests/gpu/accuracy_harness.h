@@ -119,14 +119,19 @@ inline const rt::PreparedScene& sceneCase(rt::VulkanContext& ctx, const std::str
   return *(cache[key] = rt::prepareScene(ctx, settings));
 }
 
+// Filter text `text` with its `keyword` setting line replaced by `keyword value`, or the setting
+// added before the closing brace when the text has none.
+inline std::string withSetting(const std::string& text, const std::string& keyword, const std::string& value) {
+  const std::regex line("\n\\s*" + keyword + "\\s[^\n]*");
+  if (std::regex_search(text, line)) return std::regex_replace(text, line, "\n    " + keyword + " " + value);
+  const size_t close = text.rfind('}');
+  return text.substr(0, close) + "    " + keyword + " " + value + "\n}\n";
+}
+
 // Sample `sample` with its bias line replaced by `bias` (appended when it has none): the bias tests
 // compare a sample against the same filter with another bias.
 inline std::string withBias(const std::string& sample, const std::string& bias) {
-  const std::string text = sampleSource(sample);
-  const std::regex line(R"(\n\s*bias\s[^\n]*)");
-  if (std::regex_search(text, line)) return std::regex_replace(text, line, "\n    bias " + bias);
-  const size_t close = text.rfind('}');
-  return text.substr(0, close) + "    bias " + bias + "\n}\n";
+  return withSetting(sampleSource(sample), "bias", bias);
 }
 
 // Runs `source` (compiled once per label) on built-in `scene` and returns its metrics, failing the
