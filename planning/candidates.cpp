@@ -6,6 +6,7 @@
 #include <set>
 
 #include "driver/driver.h"
+#include "spec/precision.h"
 #include "spec/print_filter.h"
 
 namespace shadowc::planning {
@@ -221,7 +222,8 @@ FilterSpec candidateSpec(const Candidate& c, const DescribeOptions& o) {
   s.blocker.subdivision = Subdivision::Uniform;
   s.blocker.uniformM = 5;
   s.kernel.size = KernelSize::Penumbra;
-  s.kernel.maxTexels = 128;
+  // What the int32 SAT serves: kernels up to the whole map (sat.glsl sums wide boxes in pieces).
+  s.kernel.maxTexels = spec::kMaxKernelTexels;
   s.kernel.subdivision = c.quadtree ? Subdivision::Quadtree : Subdivision::Uniform;
   s.kernel.quadtreeHeight = c.quadtreeHeight > 0 ? c.quadtreeHeight : s.kernel.quadtreeHeight;
   s.kernel.uniformN = c.uniformN;
