@@ -170,6 +170,21 @@ TEST(Combinations, Int32SatServesKernelsUpToTheMap) {
   EXPECT_EQ(spec::int32SatPieces(4096), 17);
 }
 
+TEST(Normalize, BackfaceDefaultsToTheShadowingTerm) {
+  // `backface shadowed`: the whole light behind the tangent plane gives 0 (shadowc_lookup.glsl);
+  // `filtered` keeps filtering such receivers. Printed and written to the spec JSON both ways.
+  EXPECT_TRUE(load("").backfaceShadowed);
+  const FilterSpec filtered = load("backface filtered");
+  EXPECT_FALSE(filtered.backfaceShadowed);
+  EXPECT_EQ(specToJson(filtered)["backface"], "filtered");
+  EXPECT_EQ(specToJson(load(""))["backface"], "shadowed");
+  EXPECT_NE(printFilter(filtered).find("filtered"), std::string::npos);
+  const LoadResult back = loadFilterSource(printFilter(filtered), "printed.shadow");
+  ASSERT_TRUE(back.spec) << formatDiagnostics(back);
+  EXPECT_FALSE(back.spec->backfaceShadowed);
+  EXPECT_EQ(codes("backface culled"), Codes{"E0302"});
+}
+
 TEST(Normalize, KernelMaxDefaultsToWhatTheStorageServes) {
   // A SAT answers any box at the same cost: its penumbra kernels default to the whole map; depth
   // taps, mips and the min-max pyramid keep 64; an explicit max is kept.
