@@ -106,6 +106,9 @@
 #ifndef SHADOWC_SAT_PIECES
 #define SHADOWC_SAT_PIECES 1  // pieces per axis of the widest int32 SAT box (sat.glsl)
 #endif
+#ifndef SHADOWC_BACKFACE_SHADOWED
+#define SHADOWC_BACKFACE_SHADOWED 1  // the whole light behind the tangent plane -> 0 (shadowc_lookup.glsl)
+#endif
 #ifndef SHADOWC_KERNEL_SUBDIVISION
 #define SHADOWC_KERNEL_SUBDIVISION SHADOWC_SUBDIV_NONE
 #endif
@@ -233,11 +236,9 @@
 
 // ---- stability-suite demonstration (FilterSpec::naiveUnguarded; docs/stability.md) ----------
 // 1: eq. 4 of vssm-yang2010 as printed (no 1 - P guard, no clamp), the raw blocker depth written
-// to the visibility image without sanitation, so the suite can show the naive form failing.
+// to the visibility image without sanitation, so the suite can show the naive form failing (the
+// planner also gives such a spec SHADOWC_SAT_PIECES 1: int32 SAT boxes in one piece, however wide).
 // Single-line hooks so that the normal path's text and line numbers do not change.
-#ifndef SHADOWC_BACKFACE_SHADOWED
-#define SHADOWC_BACKFACE_SHADOWED 1  // the whole light behind the tangent plane -> 0 (shadowc_lookup.glsl)
-#endif
 #ifndef SHADOWC_NAIVE_UNGUARDED
 #define SHADOWC_NAIVE_UNGUARDED 0
 #endif
