@@ -552,18 +552,22 @@ bool intentModels(const FilterSpec& s) {
   return true;
 }
 
-// shadowc_lookup.glsl shadowc_lightBehind, in double: the light width the shader reads (folded or
-// the frame's), h = half of it; spot: the rectangle in the light view's z = 0 plane; sun: the cap
-// of half-angle atan(h) around -z; point: the sphere of radius h at the origin.
-static bool lightBehind(const FilterSpec& s, const LightFrame& light, const std::array<double, 3>& p,
+// The light width the shader reads (kernel.glsl shadowc_lightWidth): the frame's lightParams.w, or
+// the folded SHADOWC_LIGHT_WIDTH (shade_plan.cpp: a sun's penumbra slope, a sphere's diameter, 0
+// for a point-shaped spot light, else the size).
+static double shaderLightWidth(const FilterSpec& s, const LightFrame& light) {
+  if (s.light.sizeFromScene) return light.lightWidth;
+  if (light.projection == Projection::Sun) return sunPenumbraSlope(s.light.angleDegrees);
+  if (light.projection == Projection::Point || s.light.type == LightType::Point) return 2 * s.light.size;
+  return s.light.shape == LightShape::Point ? 0.0 : s.light.size;
+}
+
+// shadowc_lookup.glsl shadowc_lightBehind, in double, for a light w wide (h = w / 2): spot, the
+// rectangle in the light view's z = 0 plane; sun, the cap of half-angle atan(h) around -z; point,
+// the sphere of radius h at the origin.
+static bool lightBehind(const LightFrame& light, double w, const std::array<double, 3>& p,
                         const std::array<double, 3>& n) {
   const bool sun = light.projection == Projection::Sun, cube = light.projection == Projection::Point;
-  double w = light.lightWidth;
-  if (!s.light.sizeFromScene)
-    w = sun                                          ? sunPenumbraSlope(s.light.angleDegrees)
-        : (cube || s.light.type == LightType::Point) ? 2 * s.light.size
-        : s.light.shape == LightShape::Point         ? 0.0
-                                                     : s.light.size;
   const double h = 0.5 * w;
   const double len = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
   const double toLight = -(n[0] * p[0] + n[1] * p[1] + n[2] * p[2]);
@@ -589,7 +593,8 @@ std::vector<double> IntentReference::operator()(const Receiver& r) const {
   const bool sun = light.projection == Projection::Sun, cube = light.projection == Projection::Point;
   // shadowc_lookup.glsl shadowc_lightBehind: no part of the light in front of the receiver's
   // tangent plane -> the shadowing term's 0, before anything else (even outside the frustum).
-  if (s.backfaceShadowed && r.normal && lightBehind(s, light, p, *r.normal)) return {0.0};
+  const double lightWidth = shaderLightWidth(s, light);
+  if (s.backfaceShadowed && r.normal && lightBehind(light, lightWidth, p, *r.normal)) return {0.0};
   // Outside the shadow map's frustum nothing was rendered that could shadow it (lit).
   if (!(r.u >= 0 && r.u <= 1 && r.v >= 0 && r.v <= 1)) return {1.0};
   Geometry g;
@@ -603,12 +608,7 @@ std::vector<double> IntentReference::operator()(const Receiver& r) const {
   g.cx = u * map.size;
   g.cy = v * map.size;
   g.zr = std::max(cube ? cubeFaceCoords(cubeFace(p), p)[2] : p[2], light.nearZ);
-  if (sun)
-    g.lightWidth = s.light.sizeFromScene ? light.lightWidth : sunPenumbraSlope(s.light.angleDegrees);
-  else if (cube || s.light.type == LightType::Point)
-    g.lightWidth = s.light.sizeFromScene ? light.lightWidth : 2 * s.light.size;
-  else
-    g.lightWidth = s.light.shape == LightShape::Point ? 0.0 : (s.light.sizeFromScene ? light.lightWidth : s.light.size);
+  g.lightWidth = lightWidth;
   double bias = s.bias.constant;
   if (s.bias.kind == BiasKind::SlopeScaled) {
     // L: towards the light's centre (spot, point; bias.glsl), or -z for a sun (its ortho form).
