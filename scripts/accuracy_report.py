@@ -80,10 +80,10 @@ TARGETS = [("two_planes", 0.03), ("large_penumbra", 0.03), ("small_penumbra", 0.
            ("engine", 0.05)]
 
 # Reference filters run beside the samples on the spot scenes (names start with "ref_"; not in the sample
-# tables). ref_pcss_dense is the model floor of the single-depth-map average-blocker family that VSSM
-# approximates: PCSS with an 8x8 grid blocker search and a 16x16 grid of depth tests over the penumbra
-# kernel (the language's densest), the kernel uncapped, the samples' receiver-plane bias and normal offset.
-# ref_pcss_taps_T: PCSS with T Poisson taps, uncapped, the tap count that matches VSSM's error.
+# tables). ref_pcss_dense is the single-depth-map average-blocker model that VSSM approximates, sampled
+# densely: PCSS with an 8x8 grid blocker search and a 16x16 grid of depth tests over the penumbra kernel
+# (the language's densest), the kernel uncapped, the samples' receiver-plane bias and normal offset.
+# ref_pcss_taps_T: PCSS with T Poisson taps, uncapped, to report the tap count that matches VSSM's error.
 REF_BIAS = "receiver_plane(constant: 0.001, normal_offset: 2)"
 REF_FILTERS = [{"name": "ref_pcss_dense", "text": "filter ref_pcss_dense {\n light area(size: scene)\n depth\n"
                 " blocker search(64, pattern: grid)\n kernel penumbra(max: 4096)\n sampling grid(16x16)\n"
@@ -226,11 +226,8 @@ def section(res, folder, seconds, a, doc_dir):
         if r["metrics"]["rmse"] == 0:
             out.append("- `{}`: every sample exact (RMSE 0), no image".format(sc))
             continue
-        src = r["images"]["error"]
-        if not os.path.isabs(src):
-            src = os.path.join(r["_folder"], src)
         name = "worst_{}.png".format(sc)
-        shutil.copy(src, os.path.join(img_dir, name))
+        shutil.copy(row_image(r, "error"), os.path.join(img_dir, name))
         out.append("- `{}`: {} (RMSE {:.4f}) ![{} error](accuracy/{})".format(sc, r["base"], r["metrics"]["rmse"], sc,
                                                                             name))
     out += [""] + targets(rows, refs, img_dir)
@@ -279,9 +276,7 @@ def error_split(row):
     """Where a row's squared error lies, by the reference's value (umbra < 0.05, lit > 0.95, penumbra between),
     from its result and reference images (8-bit: a breakdown, not a measurement to 1e-3), and the penumbra's
     mean signed error (> 0: too bright)."""
-    def path(p):
-        return p if os.path.isabs(p) else os.path.join(row["_folder"], p)
-    res, ref = read_gray_png(path(row["images"]["result"])), read_gray_png(path(row["images"]["reference"]))
+    res, ref = read_gray_png(row_image(row, "result")), read_gray_png(row_image(row, "reference"))
     sq = {"umbra": 0.0, "penumbra": 0.0, "lit": 0.0}
     signed, n = 0.0, 0
     for rr, fr in zip(res, ref):
@@ -332,11 +327,8 @@ def targets(rows, refs, img_dir):
         out.append("| {} | {} | {} | {:.4f} | {} | {} |".format(sc, bound, best["base"], e, "yes" if met else "**no**",
                                                               "—" if floor is None else "{:.4f}".format(floor)))
         if not met:
-            src = best["images"]["error"]
-            if not os.path.isabs(src):
-                src = os.path.join(best["_folder"], src)
             name = "target_{}.png".format(sc)
-            shutil.copy(src, os.path.join(img_dir, name))
+            shutil.copy(row_image(best, "error"), os.path.join(img_dir, name))
             why = ("the dense PCSS misses it too, {:.4f}".format(floor) if floor is not None and floor > bound
                    else "the dense PCSS meets it, {:.4f}: VSSM's approximation of that model".format(floor)
                    if floor is not None else "no dense PCSS row")
@@ -359,6 +351,12 @@ def targets(rows, refs, img_dir):
                     "{:.4f}".format(ref[("ref_pcss_dense", "large_penumbra")])
                     if ("ref_pcss_dense", "large_penumbra") in ref else "—")]
     return out
+
+
+def row_image(row, kind):
+    """The path of a sweep row's `kind` image (result, reference, error): relative to its sweep folder."""
+    path = row["images"][kind]
+    return path if os.path.isabs(path) else os.path.join(row["_folder"], path)
 
 
 def replace_section(text, body):
