@@ -126,10 +126,10 @@ std::optional<ImageFormat> writtenFormat(const Manifest& m, const Pass& p) {
 
 // Texel fetches per shaded pixel, worst case, from the spec (what the lookup templates read):
 // a SAT box is 4 texel reads of the SAT (sat.glsl; 16 with bilinear corners), a uniform m x m walk
-// with whole-texel corners shares corners, 2 m (m + 1) reads (vssm.glsl shadowc_uniformWalk), plus
-// the root's 4 first with `subdivide: nonplanar`; a quadtree counts every node, a PCF leaf n^2
-// reads, a PCF tap 1 depth read (bilinear = 4 texels, counted as 1 gather-like sample here), a
-// min-max early out 4 reads of one pyramid level.
+// with whole-texel corners shares corners along rows and between rows, (m + 1)^2 reads (vssm.glsl
+// shadowc_uniformWalk), plus the root's 4 first (both `subdivide` forms test it); a quadtree counts every node, a PCF
+// leaf n^2 reads, a PCF tap 1 depth read (bilinear = 4 texels, counted as 1 gather-like sample here), a min-max early
+// out 4 reads of one pyramid level.
 std::string fetchesPerPixel(const FilterSpec& s) {
   const bool moments = s.representation == Representation::Moments;
   const bool sat = moments && s.storage.sat != SatKind::None;
@@ -142,20 +142,16 @@ std::string fetchesPerPixel(const FilterSpec& s) {
   }
   if (!sat) return fmt::format("{} (moments texels{})", n + s.moments.layers, n ? " + 4 minmax" : "");
   const long long perBox = s.storage.fractionalCorners ? 16 : 4;
-  auto reads = [&](Subdivision sub, int m, int h, bool nonPlanarOnly) -> long long {
-    if (sub == Subdivision::Uniform && m > 1) {
-      const long long walk = s.storage.fractionalCorners ? perBox * m * m : 2LL * m * (m + 1);
-      return walk + (nonPlanarOnly ? perBox : 0);
-    }
+  auto reads = [&](Subdivision sub, int m, int h) -> long long {
+    if (sub == Subdivision::Uniform && m > 1)
+      return perBox + (s.storage.fractionalCorners ? perBox * m * m : (m + 1LL) * (m + 1));
     if (sub == Subdivision::Quadtree) return perBox * (((1LL << (2 * (h + 1))) - 1) / 3);  // every node
     return perBox;
   };
-  const long long blocker =
-      s.blocker.kind == BlockerKind::Moments
-          ? reads(s.blocker.subdivision, s.blocker.uniformM, s.blocker.quadtreeHeight, s.blocker.uniformNonPlanarOnly)
-          : 0;
-  const long long kernel =
-      reads(s.kernel.subdivision, s.kernel.uniformN, s.kernel.quadtreeHeight, s.kernel.uniformNonPlanarOnly);
+  const long long blocker = s.blocker.kind == BlockerKind::Moments
+                                ? reads(s.blocker.subdivision, s.blocker.uniformM, s.blocker.quadtreeHeight)
+                                : 0;
+  const long long kernel = reads(s.kernel.subdivision, s.kernel.uniformN, s.kernel.quadtreeHeight);
   const long long leaves = s.kernel.subdivision == Subdivision::Quadtree  ? (1LL << (2 * s.kernel.quadtreeHeight))
                            : s.kernel.subdivision == Subdivision::Uniform ? 1LL * s.kernel.uniformN * s.kernel.uniformN
                                                                           : 1;

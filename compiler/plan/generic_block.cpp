@@ -9,12 +9,13 @@
 
 #include "plan/internal_error.h"
 #include "plan/quadtree_tables.h"
+#include "spec/filter_spec.h"
 
 namespace shadowc {
 namespace {
 
 // Integers the templates use in #if or as array sizes: they stay compile-time.
-constexpr std::string_view kStaticIntegers[] = {"SHADOWC_LAYERS", "SHADOWC_SAT_PIECES"};
+constexpr std::string_view kStaticIntegers[] = {"SHADOWC_LAYERS", "SHADOWC_SAT_PIECES", "SHADOWC_UNIFORM_MAX_DEN"};
 
 bool staysStatic(const Constant& c) {
   if (!std::holds_alternative<long long>(c.value) && !std::holds_alternative<Real>(c.value)) return true;
@@ -108,6 +109,9 @@ void makeGeneric(PassGraph& graph) {
     }
     block.members.push_back(std::move(m));
   }
+  // m and n become uniforms: the uniform walk's arrays (vssm.glsl) take the largest the checker accepts.
+  for (Constant& c : kept)
+    if (c.name == "SHADOWC_UNIFORM_MAX_DEN") c.value = static_cast<long long>(std::max(kMaxUniformM, kMaxUniformN));
   if (unrolledHeight > 0) {
     for (Constant& c : kept)
       if (c.name == "SHADOWC_QUADTREE_UNROLLED") c.value = false;

@@ -122,6 +122,11 @@ enum class BlockerKind {
 };
 enum class SamplePattern { Grid, Poisson };
 enum class Subdivision { None, Uniform, Quadtree };
+// The largest uniform subdivisions the checker accepts (blocker m x m, kernel n x n). The uniform
+// walk of vssm.glsl keeps a row of den + 1 SAT corners and a bit per sub-kernel of a row, so a
+// generic shader, whose m and n are uniforms, sizes those for the larger of the two.
+inline constexpr int kMaxUniformM = 16;
+inline constexpr int kMaxUniformN = 32;
 struct BlockerSpec {
   BlockerKind kind = BlockerKind::None;
   int taps = 16;  // Search: number of taps

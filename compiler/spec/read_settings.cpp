@@ -357,7 +357,7 @@ class SettingsReader : ValueReader {
         bl.subdivision = Subdivision::Uniform;
         if (bind(*sub, {{"m", true}, {"subdivide", false}}, sb)) {
           if (const Value* x = get(sb, "m"))
-            if (auto n = integer(x, arg("m", *sub), 1, 16)) bl.uniformM = *n;
+            if (auto n = integer(x, arg("m", *sub), 1, kMaxUniformM)) bl.uniformM = *n;
           if (const Value* x = get(sb, "subdivide"))
             if (auto c = choice(x, arg("subdivide", *sub), {"always", "nonplanar"})) bl.uniformNonPlanarOnly = *c == 1;
         }
@@ -399,7 +399,7 @@ class SettingsReader : ValueReader {
     k.size = KernelSize::Penumbra;
     k.subdivision = *idx == 1 ? Subdivision::None : *idx == 2 ? Subdivision::Uniform : Subdivision::Quadtree;
     if (const Value* x = get(b, "n"))
-      if (auto n = integer(x, arg("n", v), 1, 32)) k.uniformN = *n;
+      if (auto n = integer(x, arg("n", v), 1, kMaxUniformN)) k.uniformN = *n;
     if (const Value* x = get(b, "subdivide"))
       if (auto c = choice(x, arg("subdivide", v), {"always", "nonplanar"})) k.uniformNonPlanarOnly = *c == 1;
     if (const Value* x = get(b, "height"))

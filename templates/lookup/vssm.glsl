@@ -167,11 +167,18 @@ bool shadowc_rootLit(vec4 box) {
 // root is accepted first (shadowc_rootLit). `nonPlanarOnly`:
 // Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
 // the den x den walk only when it is non-planar (classify accumulates nothing then).
-// With whole-texel corners neighbouring sub-kernels share SAT corners: the walk goes row by row
-// and carries the last column's two corners, so a row of den boxes reads 2 (den + 1) corners
-// instead of 4 den (den = 5: 60 texel reads instead of 100; issue 10, lookups that do only the
-// work a pixel needs). The sums are the same four corners in the same order as sat.glsl's
+// With whole-texel corners neighbouring sub-kernels share SAT corners: the walk goes row by row,
+// carries the last column's two corners along a row and the row's bottom corners (`top`) to the
+// next row, so the den x den boxes read (den + 1)^2 corners instead of 4 den^2 (den = 5: 36 texel
+// reads instead of 100). The sums are the same four corners in the same order as sat.glsl's
 // shadowc_summedMean, so every box mean is bit-identical to a separate box query.
+// Non-planar sub-kernels are marked in a bit mask per row and resolved by PCF after the row's
+// boxes, in the same order: on lavapipe an 8-lane SIMD group runs a branch when any lane takes
+// it, so PCF inside the walk (den^2 copies of it once the loops unroll) cost every group with one
+// non-planar lane den^2 masked PCF branches; a loop over a row's set bits costs the most any lane
+// has (issue 10: the mixed scheme m = 5 / H = 3 at least as fast as H = 3; docs/performance.md).
+// (One mask array for the whole walk, resolved at its end, gave wrong images in the stability
+// suite; not isolated between glslang, spirv-opt and lavapipe. A row's mask is a scalar.)
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   if (den > 1) {
     vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
@@ -184,30 +191,44 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
+  shadowc_SatSum top[SHADOWC_UNIFORM_MAX_DEN + 1];  // corners on the current row's top edge
+  int y0 = root.y;
+  for (int i = 0; i <= den; ++i) top[i] = shadowc_summedCorner(root.x + (i * size.x) / den - 1, y0 - 1, 0);
   for (int j = 0; j < den; ++j) {
-    int y0 = root.y + (j * size.y) / den;
     int y1 = root.y + ((j + 1) * size.y) / den;
     if (y1 <= y0) continue;  // an empty row of sub-kernels (narrower than a texel): area 0
     int x0 = root.x;
-    shadowc_SatSum lo0 = shadowc_summedCorner(x0 - 1, y0 - 1, 0);
     shadowc_SatSum hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
+    uint marks = 0u;  // bit i: sub-kernel (i, j) is non-planar
     for (int i = 0; i < den; ++i) {
       int x1 = root.x + ((i + 1) * size.x) / den;
-      if (x1 <= x0) continue;  // an empty sub-kernel: its corners are the ones carried
-      shadowc_SatSum lo1 = shadowc_summedCorner(x1 - 1, y0 - 1, 0);
-      shadowc_SatSum hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
-      float area = float((x1 - x0) * (y1 - y0));
-      vec4 box = vec4(x0, y0, x1, y1);
-      vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - lo1 + lo0, area);
+      shadowc_SatSum hi1 = hi0;  // an empty sub-kernel: its right corners are its left ones
+      if (x1 > x0) {
+        hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
+        float area = float((x1 - x0) * (y1 - y0));
+        vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1] + top[i], area);
 #if SHADOWC_SAT_WIDE
-      // a sub-kernel over 255 texels a side wraps its int32 sum: the wide query (sat.glsl)
-      if (max(x1 - x0, y1 - y0) > shadowc_satPiece) mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
+        // a sub-kernel over 255 texels a side wraps its int32 sum: the wide query (sat.glsl)
+        if (max(x1 - x0, y1 - y0) > shadowc_satPiece) mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
 #endif
-      if (shadowc_qtAccept(mean, area) == 1) shadowc_qtResolveLeaf(box);
+        if (shadowc_qtAccept(mean, area) == 1) {
+#if SHADOWC_FALLBACK_PCF
+          marks |= 1u << i;
+#else
+          shadowc_qtResolveLeaf(vec4(x0, y0, x1, y1));  // option 1: lit, one add
+#endif
+        }
+      }
+      top[i] = hi0;
       x0 = x1;
-      lo0 = lo1;
       hi0 = hi1;
     }
+    top[den] = hi0;
+#if SHADOWC_FALLBACK_PCF
+    // The row's non-planar sub-kernels, left to right (the walk's order), after its boxes.
+    for (; marks != 0u; marks &= marks - 1u) shadowc_qtResolveLeaf(shadowc_subBox(ivec3(findLSB(marks), j, den)));
+#endif
+    y0 = y1;
   }
 #else
   for (int j = 0; j < den; ++j)

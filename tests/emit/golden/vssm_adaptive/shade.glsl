@@ -432,7 +432,7 @@ bool shadowc_rootLit(vec4 box){
   shadowc_aLitArea += area;
   return true;
 }
-#line 175
+#line 182
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   if(den > 1){
     vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
@@ -445,42 +445,53 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
+               uvec4 top[5 + 1];
+  int y0 = root . y;
+  for(int i = 0;i <= den;++ i)top[i]= shadowc_summedCorner(root . x +(i * size . x)/ den - 1, y0 - 1, 0);
   for(int j = 0;j < den;++ j){
-    int y0 = root . y +(j * size . y)/ den;
     int y1 = root . y +((j + 1)* size . y)/ den;
     if(y1 <= y0)continue;
     int x0 = root . x;
-                 uvec4 lo0 = shadowc_summedCorner(x0 - 1, y0 - 1, 0);
                  uvec4 hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
+    uint marks = 0u;
     for(int i = 0;i < den;++ i){
       int x1 = root . x +((i + 1)* size . x)/ den;
-      if(x1 <= x0)continue;
-                   uvec4 lo1 = shadowc_summedCorner(x1 - 1, y0 - 1, 0);
-                   uvec4 hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
-      float area = float((x1 - x0)*(y1 - y0));
-      vec4 box = vec4(x0, y0, x1, y1);
-      vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - lo1 + lo0, area);
-#line 204
-      if(max(x1 - x0, y1 - y0)> shadowc_satPiece)mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
+                   uvec4 hi1 = hi0;
+      if(x1 > x0){
+        hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
+        float area = float((x1 - x0)*(y1 - y0));
+        vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1]+ top[i], area);
+#line 212
+        if(max(x1 - x0, y1 - y0)> shadowc_satPiece)mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
 
-      if(shadowc_qtAccept(mean, area)== 1)shadowc_qtResolveLeaf(box);
+        if(shadowc_qtAccept(mean, area)== 1){
+
+          marks |= 1u << i;
+#line 220
+        }
+      }
+      top[i]= hi0;
       x0 = x1;
-      lo0 = lo1;
       hi0 = hi1;
     }
+    top[den]= hi0;
+#line 229
+    for(;marks != 0u;marks &= marks - 1u)shadowc_qtResolveLeaf(shadowc_subBox(ivec3(findLSB(marks), j, den)));
+
+    y0 = y1;
   }
-#line 216
+#line 237
 }
-#line 225
+#line 246
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 228
+#line 249
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 237
+#line 258
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
   for(int step = 0;step < 85 && n . z > 0;++ step){
@@ -495,12 +506,12 @@ void shadowc_qtWalk(int height){
     n = shadowc_qtNextNode(n);
   }
 }
-#line 254
+#line 275
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 263
+#line 284
   shadowc_uniformWalk(5, 0 != 0);
-#line 268
+#line 289
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -517,12 +528,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 286
+#line 307
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 292
+#line 313
   shadowc_qtWalk(3);
-#line 299
+#line 320
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -536,20 +547,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 319
+#line 340
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 327
+#line 348
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 336
+#line 357
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
