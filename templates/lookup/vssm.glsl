@@ -180,31 +180,31 @@ bool shadowc_rootLit(vec4 box) {
 // (One mask array for the whole walk, resolved at its end, gave wrong images in the stability
 // suite; not isolated between glslang, spirv-opt and lavapipe. A row's mask is a scalar.)
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
+  bool walk = true;
   if (den > 1) {
     vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
-    if (nonPlanarOnly) {
-      if (shadowc_qtClassifyBox(whole) == 0) return;
-    } else if (shadowc_rootLit(whole)) {
-      return;
-    }
+    walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole) == 1 : !shadowc_rootLit(whole);
   }
+  // lavapipe runs both sides of a divergent branch in every 8-lane group, masked, but leaves a
+  // loop as soon as no lane is in it; so the lanes that accepted the root get a walk of no steps
+  // (a return or an `if` here would still run the unrolled walk for every group).
+  int rows = walk ? den : -1;
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
   shadowc_SatSum top[SHADOWC_UNIFORM_MAX_DEN + 1];  // corners on the current row's top edge
   int y0 = root.y;
-  for (int i = 0; i <= den; ++i) top[i] = shadowc_summedCorner(root.x + (i * size.x) / den - 1, y0 - 1, 0);
-  for (int j = 0; j < den; ++j) {
+  // Step j reads the den + 1 corners on the bottom edge of row j and classifies its boxes against
+  // `top`; step -1 reads the root's top edge (y1 = y0: no box).
+  for (int j = -1; j < rows; ++j) {
     int y1 = root.y + ((j + 1) * size.y) / den;
-    if (y1 <= y0) continue;  // an empty row of sub-kernels (narrower than a texel): area 0
     int x0 = root.x;
     shadowc_SatSum hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
     uint marks = 0u;  // bit i: sub-kernel (i, j) is non-planar
     for (int i = 0; i < den; ++i) {
       int x1 = root.x + ((i + 1) * size.x) / den;
-      shadowc_SatSum hi1 = hi0;  // an empty sub-kernel: its right corners are its left ones
-      if (x1 > x0) {
-        hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
+      shadowc_SatSum hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
+      if (x1 > x0 && y1 > y0) {  // else an empty sub-kernel (narrower than a texel): area 0
         float area = float((x1 - x0) * (y1 - y0));
         vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1] + top[i], area);
 #if SHADOWC_SAT_WIDE
@@ -231,7 +231,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     y0 = y1;
   }
 #else
-  for (int j = 0; j < den; ++j)
+  for (int j = 0; j < rows; ++j)  // rows = -1: none
     for (int i = 0; i < den; ++i) shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
 #endif
 }

@@ -363,31 +363,28 @@ bool shadowc_rootLit(vec4 box){
 }
 #line 182
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
+  bool walk = true;
   if(den > 1){
     vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
-    if(nonPlanarOnly){
-      if(shadowc_qtClassifyBox(whole)== 0)return;
-    } else if(shadowc_rootLit(whole)){
-      return;
-    }
+    walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole)== 1 : ! shadowc_rootLit(whole);
   }
+#line 191
+  int rows = walk ? den : - 1;
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
                uvec4 top[5 + 1];
   int y0 = root . y;
-  for(int i = 0;i <= den;++ i)top[i]= shadowc_summedCorner(root . x +(i * size . x)/ den - 1, y0 - 1, 0);
-  for(int j = 0;j < den;++ j){
+#line 199
+  for(int j = - 1;j < rows;++ j){
     int y1 = root . y +((j + 1)* size . y)/ den;
-    if(y1 <= y0)continue;
     int x0 = root . x;
                  uvec4 hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
     uint marks = 0u;
     for(int i = 0;i < den;++ i){
       int x1 = root . x +((i + 1)* size . x)/ den;
-                   uvec4 hi1 = hi0;
-      if(x1 > x0){
-        hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
+                   uvec4 hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
+      if(x1 > x0 && y1 > y0){
         float area = float((x1 - x0)*(y1 - y0));
         vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1]+ top[i], area);
 #line 214
