@@ -185,9 +185,10 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
     walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole) == 1 : !shadowc_rootLit(whole);
   }
-  // lavapipe runs both sides of a divergent branch in every 8-lane group, masked, but leaves a
-  // loop as soon as no lane is in it; so the lanes that accepted the root get a walk of no steps
-  // (a return or an `if` here would still run the unrolled walk for every group).
+  // lavapipe runs both sides of a divergent branch in every 8-lane group, masked (gallivm's
+  // if_cond only pushes an execution mask), but leaves a loop as soon as no lane is in it; so the
+  // lanes that accepted the root get a walk of no steps (a return or an `if` here would still run
+  // the unrolled walk for every group).
   int rows = walk ? den : -1;
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
   ivec2 root = ivec2(shadowc_vRoot.xy);
@@ -208,8 +209,10 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
         float area = float((x1 - x0) * (y1 - y0));
         vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1] + top[i], area);
 #if SHADOWC_SAT_WIDE
-        // a sub-kernel over 255 texels a side wraps its int32 sum: the wide query (sat.glsl)
-        if (max(x1 - x0, y1 - y0) > shadowc_satPiece) mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
+        // a sub-kernel over 255 texels a side wraps its int32 sum: the wide query (sat.glsl), in a
+        // loop of 0 or 1 steps so that groups with no such sub-kernel skip it (see above)
+        for (int w = max(x1 - x0, y1 - y0) > shadowc_satPiece ? 0 : 1; w < 1; ++w)
+          mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
 #endif
         if (shadowc_qtAccept(mean, area) == 1) {
 #if SHADOWC_FALLBACK_PCF
@@ -259,14 +262,13 @@ void shadowc_qtWalk(int height) {
   ivec3 n = ivec3(0, 0, 1);
   for (int step = 0; step < SHADOWC_QT_NODES && n.z > 0; ++step) {
     vec4 box = shadowc_qtBox(n);
-    if (shadowc_qtClassifyBox(box) == 1) {
-      if (n.z < (1 << height)) {
-        n = ivec3(2 * n.xy, 2 * n.z);  // Child: the first of the four
-        continue;
-      }
-      shadowc_qtResolveLeaf(box);
-    }
-    n = shadowc_qtNextNode(n);
+    bool nonPlanar = shadowc_qtClassifyBox(box) == 1;
+    bool leaf = n.z >= (1 << height);
+    // A non-planar leaf's PCF in a loop of 0 or 1 steps: lavapipe would run it in an `if` at every
+    // step of every group (shadowc_uniformWalk).
+    for (int k = nonPlanar && leaf ? 0 : 1; k < 1; ++k) shadowc_qtResolveLeaf(box);
+    n = nonPlanar && !leaf ? ivec3(2 * n.xy, 2 * n.z)  // Child: the first of the four
+                           : shadowc_qtNextNode(n);
   }
 }
 #endif

@@ -67,7 +67,7 @@ TEST(EmittedCode, TableQuadtreeTraversalIsALoopWithoutTables) {
   const driver::Result r = driver::compileSpec(vssmTraversal(QuadtreeTraversal::Table));
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
-  EXPECT_NE(shade.find("n = shadowc_qtNextNode(n);"), std::string::npos);
+  EXPECT_NE(shade.find(": shadowc_qtNextNode(n);"), std::string::npos);  // Next, computed from the node
   EXPECT_EQ(shade.find("shadowc_qtNext["), std::string::npos);
   EXPECT_EQ(shade.find("shadowc_qtChild["), std::string::npos);
   EXPECT_EQ(shade.find("shadowc_qtNode["), std::string::npos);

@@ -439,14 +439,14 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
     walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole)== 1 : ! shadowc_rootLit(whole);
   }
-#line 191
+#line 192
   int rows = walk ? den : - 1;
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
                uvec4 top[5 + 1];
   int y0 = root . y;
-#line 199
+#line 200
   for(int j = - 1;j < rows;++ j){
     int y1 = root . y +((j + 1)* size . y)/ den;
     int x0 = root . x;
@@ -458,13 +458,14 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       if(x1 > x0 && y1 > y0){
         float area = float((x1 - x0)*(y1 - y0));
         vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1]+ top[i], area);
-#line 212
-        if(max(x1 - x0, y1 - y0)> shadowc_satPiece)mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
+#line 214
+        for(int w = max(x1 - x0, y1 - y0)> shadowc_satPiece ? 0 : 1;w < 1;++ w)
+          mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
 
         if(shadowc_qtAccept(mean, area)== 1){
 
           marks |= 1u << i;
-#line 220
+#line 223
         }
       }
       top[i]= hi0;
@@ -472,43 +473,41 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       hi0 = hi1;
     }
     top[den]= hi0;
-#line 229
+#line 232
     for(;marks != 0u;marks &= marks - 1u)shadowc_qtResolveLeaf(shadowc_subBox(ivec3(findLSB(marks), j, den)));
 
     y0 = y1;
   }
-#line 237
+#line 240
 }
-#line 246
-ivec3 shadowc_qtNextNode(ivec3 n){
 #line 249
+ivec3 shadowc_qtNextNode(ivec3 n){
+#line 252
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 258
+#line 261
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
-    if(shadowc_qtClassifyBox(box)== 1){
-      if(n . z <(1 << height)){
-        n = ivec3(2 * n . xy, 2 * n . z);
-        continue;
-      }
-      shadowc_qtResolveLeaf(box);
-    }
-    n = shadowc_qtNextNode(n);
+    bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
+    bool leaf = n . z >=(1 << height);
+#line 269
+    for(int k = nonPlanar && leaf ? 0 : 1;k < 1;++ k)shadowc_qtResolveLeaf(box);
+    n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
+                           : shadowc_qtNextNode(n);
   }
 }
-#line 275
+#line 277
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 284
+#line 286
   shadowc_uniformWalk(5, 0 != 0);
-#line 289
+#line 291
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -525,12 +524,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 307
+#line 309
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 313
+#line 315
   shadowc_qtWalk(3);
-#line 320
+#line 322
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -544,20 +543,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 340
+#line 342
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 348
+#line 350
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 357
+#line 359
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
