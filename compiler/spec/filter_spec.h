@@ -127,6 +127,7 @@ enum class Subdivision { None, Uniform, Quadtree };
 // generic shader, whose m and n are uniforms, sizes those for the larger of the two.
 inline constexpr int kMaxUniformM = 16;
 inline constexpr int kMaxUniformN = 32;
+static_assert(kMaxUniformM <= 32 && kMaxUniformN <= 32, "vssm.glsl marks a row's sub-kernels in one uint");
 struct BlockerSpec {
   BlockerKind kind = BlockerKind::None;
   int taps = 16;  // Search: number of taps
