@@ -173,10 +173,10 @@ bool shadowc_rootLit(vec4 box) {
 // reads instead of 100). The sums are the same four corners in the same order as sat.glsl's
 // shadowc_summedMean, so every box mean is bit-identical to a separate box query.
 // Non-planar sub-kernels are marked in a bit mask per row and resolved by PCF after the row's
-// boxes, in the same order: on lavapipe an 8-lane SIMD group runs a branch when any lane takes
-// it, so PCF inside the walk (den^2 copies of it once the loops unroll) cost every group with one
-// non-planar lane den^2 masked PCF branches; a loop over a row's set bits costs the most any lane
-// has (issue 10: the mixed scheme m = 5 / H = 3 at least as fast as H = 3; docs/performance.md).
+// boxes, in the same order: on lavapipe an 8-lane SIMD group runs a divergent branch's body, masked,
+// whatever its lanes decide, so PCF inside the walk (den^2 copies once the loops unroll) cost every
+// group den^2 masked PCFs; a loop over a row's set bits costs the most any lane of the group has
+// (issue 10: the mixed scheme m = 5 / H = 3 at least as fast as H = 3; docs/performance.md).
 // (One mask array for the whole walk, resolved at its end, gave wrong images in the stability
 // suite; not isolated between glslang, spirv-opt and lavapipe. A row's mask is a scalar.)
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
