@@ -172,51 +172,63 @@ bool shadowc_rootLit(vec4 box) {
 // next row, so the den x den boxes read (den + 1)^2 corners instead of 4 den^2 (den = 5: 36 texel
 // reads instead of 100). The sums are the same four corners in the same order as sat.glsl's
 // shadowc_summedMean, so every box mean is bit-identical to a separate box query.
-// Non-planar sub-kernels are marked in a bit mask per row and resolved by PCF after the row's
-// boxes, in the same order: on lavapipe an 8-lane SIMD group runs a divergent branch's body, masked,
-// whatever its lanes decide, so PCF inside the walk (den^2 copies once the loops unroll) cost every
-// group den^2 masked PCFs; a loop over a row's set bits costs the most any lane of the group has
-// (issue 10: the mixed scheme m = 5 / H = 3 at least as fast as H = 3; docs/performance.md).
-// (One mask array for the whole walk, resolved at its end, gave wrong images in the stability
-// suite; not isolated between glslang, spirv-opt and lavapipe. A row's mask is a scalar.)
+// What lavapipe charges (issue 10, docs/performance.md "Divergent branches on lavapipe"): an
+// 8-lane SIMD group runs every branch body and every loop's first iteration, masked, whatever its
+// lanes decide (gallivm pushes an execution mask for an `if` and tests for live lanes only at a
+// loop's end); only further iterations are skipped once no lane is left. So:
+// - the rows are a loop of den steps for lanes whose root needs the walk and of none for the rest
+//   (step -1 reads the root's top edge, which a walk needs anyway);
+// - non-planar sub-kernels are marked in a bit mask and get their PCF in one loop over the set
+//   bits after the boxes, in the walk's order (the PCF sums are their own accumulators, so the
+//   results are bit-identical): a group pays the most PCFs any of its lanes needs, plus one masked
+//   PCF, instead of den^2 masked PCFs (one per sub-kernel `if`). With den^2 > 32 the mask is per
+//   row, resolved after each row. (A mask *array* for the whole walk gave wrong images in the
+//   stability suite; not isolated between glslang, spirv-opt and lavapipe: masks are scalars.)
+// - a root wider than den SAT pieces (sat.glsl: a sub-kernel over 255 texels a side wraps its int32
+//   sum) is walked by separate loops, box by box with the wide query, whose bounds are 0 for other
+//   lanes: a group without such a root pays one masked box instead of den^2 masked wide queries.
+#define SHADOWC_WALK_MASK_ONCE (SHADOWC_UNIFORM_MAX_DEN * SHADOWC_UNIFORM_MAX_DEN <= 32)
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   bool walk = true;
   if (den > 1) {
     vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
     walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole) == 1 : !shadowc_rootLit(whole);
   }
-  // lavapipe runs both sides of a divergent branch in every 8-lane group, masked (gallivm's
-  // if_cond only pushes an execution mask), but leaves a loop as soon as no lane is in it; so the
-  // lanes that accepted the root get a walk of no steps (a return or an `if` here would still run
-  // the unrolled walk for every group).
-  int rows = walk ? den : -1;
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
+#if SHADOWC_SAT_WIDE
+  // Every sub-kernel is at most ceil(size / den) texels a side, so none is wide unless the root
+  // exceeds den pieces.
+  bool wide = max(size.x, size.y) > shadowc_satPiece * den;
+  int wideRows = walk && wide ? den : 0;
+  for (int j = 0; j < wideRows; ++j)
+    for (int i = 0; i < wideRows; ++i) shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
+  walk = walk && !wide;
+#endif
+  int rows = walk ? den : -1;
   shadowc_SatSum top[SHADOWC_UNIFORM_MAX_DEN + 1];  // corners on the current row's top edge
   int y0 = root.y;
+  uint marks = 0u;  // bit j * den + i (or i, per row): sub-kernel (i, j) is non-planar
   // Step j reads the den + 1 corners on the bottom edge of row j and classifies its boxes against
   // `top`; step -1 reads the root's top edge (y1 = y0: no box).
   for (int j = -1; j < rows; ++j) {
     int y1 = root.y + ((j + 1) * size.y) / den;
     int x0 = root.x;
     shadowc_SatSum hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
-    uint marks = 0u;  // bit i: sub-kernel (i, j) is non-planar
+#if SHADOWC_WALK_MASK_ONCE
+    int bit = j * den;
+#else
+    int bit = 0;
+#endif
     for (int i = 0; i < den; ++i) {
       int x1 = root.x + ((i + 1) * size.x) / den;
       shadowc_SatSum hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
       if (x1 > x0 && y1 > y0) {  // else an empty sub-kernel (narrower than a texel): area 0
         float area = float((x1 - x0) * (y1 - y0));
-        vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1] + top[i], area);
-#if SHADOWC_SAT_WIDE
-        // a sub-kernel over 255 texels a side wraps its int32 sum: the wide query (sat.glsl), in a
-        // loop of 0 or 1 steps so that groups with no such sub-kernel skip it (see above)
-        for (int w = max(x1 - x0, y1 - y0) > shadowc_satPiece ? 0 : 1; w < 1; ++w)
-          mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
-#endif
-        if (shadowc_qtAccept(mean, area) == 1) {
+        if (shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1] + top[i], area), area) == 1) {
 #if SHADOWC_FALLBACK_PCF
-          marks |= 1u << i;
+          marks |= 1u << (bit + i);
 #else
           shadowc_qtResolveLeaf(vec4(x0, y0, x1, y1));  // option 1: lit, one add
 #endif
@@ -227,14 +239,21 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       hi0 = hi1;
     }
     top[den] = hi0;
-#if SHADOWC_FALLBACK_PCF
-    // The row's non-planar sub-kernels, left to right (the walk's order), after its boxes.
+#if SHADOWC_FALLBACK_PCF && !SHADOWC_WALK_MASK_ONCE
     for (; marks != 0u; marks &= marks - 1u) shadowc_qtResolveLeaf(shadowc_subBox(ivec3(findLSB(marks), j, den)));
 #endif
     y0 = y1;
   }
+#if SHADOWC_FALLBACK_PCF && SHADOWC_WALK_MASK_ONCE
+  for (; marks != 0u; marks &= marks - 1u) {
+    int b = findLSB(marks);
+    int j = b / den;
+    shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
+  }
+#endif
 #else
-  for (int j = 0; j < rows; ++j)  // rows = -1: none
+  int rows = walk ? den : 0;
+  for (int j = 0; j < rows; ++j)
     for (int i = 0; i < den; ++i) shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
 #endif
 }
@@ -256,20 +275,55 @@ ivec3 shadowc_qtNextNode(ivec3 n) {
   return ivec3((n.x & ~1) | (c & 1), (n.y & ~1) | (c >> 1), n.z);
 }
 
+#if SHADOWC_FALLBACK_PCF
+// Leaf (x, y) of a quadtree of height <= 3 as its Morton code (x in the even bits, y in the odd):
+// pre-order visits the leaves in Z order, (0,0) (1,0) (0,1) (1,1) at every level, so ascending
+// codes are the walk's own order.
+int shadowc_qtMorton(ivec2 p) {
+  ivec2 s = (p & 1) | ((p & 2) << 1) | ((p & 4) << 2);
+  return s.x | (s.y << 1);
+}
+int shadowc_qtUnmorton(int b) { return (b & 1) | ((b >> 1) & 2) | ((b >> 2) & 4); }
+#endif
+
 // Stackless walk of Algorithm 2 ([Bun05], Fig. 5): Child on "descend", else Next. Nodes at
 // level `height` are leaves. Bounded by the node count, as the table walk was.
+// With the PCF fallback and height <= 3 the non-planar leaves are marked in two mask words (64
+// leaves) and get their PCF after the walk, in the walk's order (Morton order), so each PCF sum is
+// bit-identical: lavapipe runs a branch body or a loop's first iteration at every step of every
+// group, masked (shadowc_uniformWalk), so a PCF inside the walk cost every group one PCF per step;
+// after it, the most any lane of the group needs plus one. Higher trees resolve a leaf in place.
 void shadowc_qtWalk(int height) {
   ivec3 n = ivec3(0, 0, 1);
+#if SHADOWC_FALLBACK_PCF
+  bool defer = height <= 3;
+  uint marksLo = 0u;  // Morton codes 0..31 of the non-planar leaves
+  uint marksHi = 0u;  // 32..63
+#endif
   for (int step = 0; step < SHADOWC_QT_NODES && n.z > 0; ++step) {
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box) == 1;
     bool leaf = n.z >= (1 << height);
-    // A non-planar leaf's PCF in a loop of 0 or 1 steps: lavapipe would run it in an `if` at every
-    // step of every group (shadowc_uniformWalk).
+#if SHADOWC_FALLBACK_PCF
+    if (defer) {
+      int b = shadowc_qtMorton(n.xy);
+      uint bit = nonPlanar && leaf ? 1u << (b & 31) : 0u;
+      if (b < 32) marksLo |= bit;
+      else marksHi |= bit;
+    } else
+#endif
     for (int k = nonPlanar && leaf ? 0 : 1; k < 1; ++k) shadowc_qtResolveLeaf(box);
     n = nonPlanar && !leaf ? ivec3(2 * n.xy, 2 * n.z)  // Child: the first of the four
                            : shadowc_qtNextNode(n);
   }
+#if SHADOWC_FALLBACK_PCF
+  while ((marksLo | marksHi) != 0u) {
+    int b = marksLo != 0u ? findLSB(marksLo) : 32 + findLSB(marksHi);
+    if (b < 32) marksLo &= marksLo - 1u;
+    else marksHi &= marksHi - 1u;
+    shadowc_qtResolveLeaf(shadowc_qtBox(ivec3(shadowc_qtUnmorton(b), shadowc_qtUnmorton(b >> 1), 1 << height)));
+  }
+#endif
 }
 #endif
 

@@ -432,40 +432,44 @@ bool shadowc_rootLit(vec4 box){
   shadowc_aLitArea += area;
   return true;
 }
-#line 182
+#line 191
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   bool walk = true;
   if(den > 1){
     vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
     walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole)== 1 : ! shadowc_rootLit(whole);
   }
-#line 192
-  int rows = walk ? den : - 1;
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
+#line 203
+  bool wide = max(size . x, size . y)> shadowc_satPiece * den;
+  int wideRows = walk && wide ? den : 0;
+  for(int j = 0;j < wideRows;++ j)
+    for(int i = 0;i < wideRows;++ i)shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
+  walk = walk && ! wide;
+
+  int rows = walk ? den : - 1;
                uvec4 top[5 + 1];
   int y0 = root . y;
-#line 200
+  uint marks = 0u;
+#line 215
   for(int j = - 1;j < rows;++ j){
     int y1 = root . y +((j + 1)* size . y)/ den;
     int x0 = root . x;
                  uvec4 hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
-    uint marks = 0u;
+
+    int bit = j * den;
+#line 224
     for(int i = 0;i < den;++ i){
       int x1 = root . x +((i + 1)* size . x)/ den;
                    uvec4 hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
       if(x1 > x0 && y1 > y0){
         float area = float((x1 - x0)*(y1 - y0));
-        vec4 mean = shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1]+ top[i], area);
-#line 214
-        for(int w = max(x1 - x0, y1 - y0)> shadowc_satPiece ? 0 : 1;w < 1;++ w)
-          mean = shadowc_summedMean(ivec4(x0, y0, x1 - 1, y1 - 1), 0);
+        if(shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1]+ top[i], area), area)== 1){
 
-        if(shadowc_qtAccept(mean, area)== 1){
-
-          marks |= 1u << i;
-#line 223
+          marks |= 1u <<(bit + i);
+#line 235
         }
       }
       top[i]= hi0;
@@ -473,41 +477,71 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       hi0 = hi1;
     }
     top[den]= hi0;
-#line 232
-    for(;marks != 0u;marks &= marks - 1u)shadowc_qtResolveLeaf(shadowc_subBox(ivec3(findLSB(marks), j, den)));
-
+#line 245
     y0 = y1;
   }
-#line 240
+
+  for(;marks != 0u;marks &= marks - 1u){
+    int b = findLSB(marks);
+    int j = b / den;
+    shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
+  }
+#line 259
 }
-#line 249
+#line 268
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 252
+#line 271
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 261
+#line 282
+int shadowc_qtMorton(ivec2 p){
+  ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
+  return s . x |(s . y << 1);
+}
+int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
+#line 296
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
+
+  bool defer = height <= 3;
+  uint marksLo = 0u;
+  uint marksHi = 0u;
+
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 269
+
+    if(defer){
+      int b = shadowc_qtMorton(n . xy);
+      uint bit = nonPlanar && leaf ? 1u <<(b & 31): 0u;
+      if(b < 32)marksLo |= bit;
+      else marksHi |= bit;
+    } else
+
     for(int k = nonPlanar && leaf ? 0 : 1;k < 1;++ k)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
+
+  while((marksLo | marksHi)!= 0u){
+    int b = marksLo != 0u ? findLSB(marksLo): 32 + findLSB(marksHi);
+    if(b < 32)marksLo &= marksLo - 1u;
+    else marksHi &= marksHi - 1u;
+    shadowc_qtResolveLeaf(shadowc_qtBox(ivec3(shadowc_qtUnmorton(b), shadowc_qtUnmorton(b >> 1), 1 << height)));
+  }
+
 }
-#line 277
+#line 331
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 286
+#line 340
   shadowc_uniformWalk(5, 0 != 0);
-#line 291
+#line 345
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -524,12 +558,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 309
+#line 363
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 315
+#line 369
   shadowc_qtWalk(3);
-#line 322
+#line 376
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -543,20 +577,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 342
+#line 396
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 350
+#line 404
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 359
+#line 413
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
