@@ -154,13 +154,19 @@ void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
 // mean lies behind d with a variance under the Threshold is fully lit, and none of its
 // sub-kernels is read (4 SAT reads instead of the whole walk for most lit receivers; the
 // quadtree walk does the same at its root). True when it accepted the root as lit.
-bool shadowc_rootLit(vec4 box) {
-  float area = shadowc_boxArea(box);
+bool shadowc_rootLit(vec4 m, float area) {
   if (!(area > 0.0)) return false;
-  vec4 m = shadowc_boxMoments(box, 0);
   if (!(m.x >= shadowc_vD && m.y - m.x * m.x < SHADOWC_LIT_THRESHOLD)) return false;
   shadowc_aLitArea += area;
   return true;
+}
+
+// Whether the root box (mean moments m over `area` texels) needs the den x den walk: `always`
+// walks unless the root is fully lit; `nonPlanarOnly` (Algorithm 1 L11-L15 / L17-L20) only when it
+// is non-planar, and otherwise accepts it as one lit or normal box.
+bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
+  if (nonPlanarOnly) return area > 0.0 && shadowc_qtAccept(m, area) == 1;
+  return !shadowc_rootLit(m, area);
 }
 
 // Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision. With `always` a fully lit
@@ -184,32 +190,49 @@ bool shadowc_rootLit(vec4 box) {
 //   PCF, instead of den^2 masked PCFs (one per sub-kernel `if`). With den^2 > 32 the mask is per
 //   row, resolved after each row. (A mask *array* for the whole walk gave wrong images in the
 //   stability suite; not isolated between glslang, spirv-opt and lavapipe: masks are scalars.)
-// - a root wider than den SAT pieces (sat.glsl: a sub-kernel over 255 texels a side wraps its int32
-//   sum) is walked by separate loops, box by box with the wide query, whose bounds are 0 for other
-//   lanes: a group without such a root pays one masked box instead of den^2 masked wide queries.
+// - a root wider than den SAT pieces has its sub-kernels read one box query each, as further steps
+//   of the loop whose step 0 reads the root (below).
 #define SHADOWC_WALK_MASK_ONCE (SHADOWC_UNIFORM_MAX_DEN * SHADOWC_UNIFORM_MAX_DEN <= 32)
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
-  bool walk = true;
-  if (den > 1) {
-    vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
-    walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole) == 1 : !shadowc_rootLit(whole);
+  vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
+  if (den == 1) {  // no subdivision: the root is the one leaf (the same corners as the walk's)
+    shadowc_qtLeafBox(whole);
+    return;
   }
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
+  uint marks = 0u;  // bit j * den + i (or i, per row): sub-kernel (i, j) is non-planar
+  bool walk = false;
+  // Step 0 reads the root box, which every lane needs. A root wider than den SAT pieces (sat.glsl:
+  // a box over 255 texels a side wraps its int32 sum; every sub-kernel is at most ceil(size / den)
+  // texels a side, so only then can one be wide) goes on with its den^2 sub-kernels, one box query
+  // per step; the others leave after step 0, so this costs them no masked wide query.
 #if SHADOWC_SAT_WIDE
-  // Every sub-kernel is at most ceil(size / den) texels a side, so none is wide unless the root
-  // exceeds den pieces.
-  bool wide = max(size.x, size.y) > shadowc_satPiece * den;
-  int wideRows = walk && wide ? den : 0;
-  for (int j = 0; j < wideRows; ++j)
-    for (int i = 0; i < wideRows; ++i) shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
-  walk = walk && !wide;
+  bool wide = SHADOWC_SAT_PIECES > den && max(size.x, size.y) > shadowc_satPiece * den;
+#else
+  const bool wide = false;
 #endif
-  int rows = walk ? den : -1;
+  int steps = 1;
+  for (int s = 0; s < steps; ++s) {
+    int k = max(s - 1, 0);
+    vec4 box = s == 0 ? whole : shadowc_subBox(ivec3(k % den, k / den, den));
+    float area = shadowc_boxArea(box);
+    vec4 m = shadowc_boxMoments(box, 0);
+    if (s == 0) {
+      walk = shadowc_rootNeedsWalk(m, area, nonPlanarOnly);
+      steps = walk && wide ? 1 + den * den : 1;
+    } else if (area > 0.0 && shadowc_qtAccept(m, area) == 1) {
+#if SHADOWC_FALLBACK_PCF && SHADOWC_WALK_MASK_ONCE
+      marks |= 1u << k;  // PCF after the walk
+#else
+      shadowc_qtResolveLeaf(box);
+#endif
+    }
+  }
+  int rows = walk && !wide ? den : -1;
   shadowc_SatSum top[SHADOWC_UNIFORM_MAX_DEN + 1];  // corners on the current row's top edge
   int y0 = root.y;
-  uint marks = 0u;  // bit j * den + i (or i, per row): sub-kernel (i, j) is non-planar
   // Step j reads the den + 1 corners on the bottom edge of row j and classifies its boxes against
   // `top`; step -1 reads the root's top edge (y1 = y0: no box).
   for (int j = -1; j < rows; ++j) {
@@ -252,7 +275,8 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   }
 #endif
 #else
-  int rows = walk ? den : 0;
+  float area = shadowc_boxArea(whole);
+  int rows = shadowc_rootNeedsWalk(shadowc_boxMoments(whole, 0), area, nonPlanarOnly) ? den : 0;
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < den; ++i) shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
 #endif

@@ -424,43 +424,58 @@ void shadowc_qtLeafBox(vec4 box){
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 #line 157
-bool shadowc_rootLit(vec4 box){
-  float area = shadowc_boxArea(box);
+bool shadowc_rootLit(vec4 m, float area){
   if(!(area > 0.0))return false;
-  vec4 m = shadowc_boxMoments(box, 0);
   if(!(m . x >= shadowc_vD && m . y - m . x * m . x < 0.0001))return false;
   shadowc_aLitArea += area;
   return true;
 }
-#line 191
+#line 167
+bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
+  if(nonPlanarOnly)return area > 0.0 && shadowc_qtAccept(m, area)== 1;
+  return ! shadowc_rootLit(m, area);
+}
+#line 196
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
-  bool walk = true;
-  if(den > 1){
-    vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
-    walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole)== 1 : ! shadowc_rootLit(whole);
+  vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
+  if(den == 1){
+    shadowc_qtLeafBox(whole);
+    return;
   }
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
-#line 203
-  bool wide = max(size . x, size . y)> shadowc_satPiece * den;
-  int wideRows = walk && wide ? den : 0;
-  for(int j = 0;j < wideRows;++ j)
-    for(int i = 0;i < wideRows;++ i)shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
-  walk = walk && ! wide;
+  uint marks = 0u;
+  bool walk = false;
+#line 212
+  bool wide = 17 > den && max(size . x, size . y)> shadowc_satPiece * den;
+#line 216
+  int steps = 1;
+  for(int s = 0;s < steps;++ s){
+    int k = max(s - 1, 0);
+    vec4 box = s == 0 ? whole : shadowc_subBox(ivec3(k % den, k / den, den));
+    float area = shadowc_boxArea(box);
+    vec4 m = shadowc_boxMoments(box, 0);
+    if(s == 0){
+      walk = shadowc_rootNeedsWalk(m, area, nonPlanarOnly);
+      steps = walk && wide ? 1 + den * den : 1;
+    } else if(area > 0.0 && shadowc_qtAccept(m, area)== 1){
 
-  int rows = walk ? den : - 1;
+      marks |= 1u << k;
+#line 231
+    }
+  }
+  int rows = walk && ! wide ? den : - 1;
                uvec4 top[5 + 1];
   int y0 = root . y;
-  uint marks = 0u;
-#line 215
+#line 238
   for(int j = - 1;j < rows;++ j){
     int y1 = root . y +((j + 1)* size . y)/ den;
     int x0 = root . x;
                  uvec4 hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
 
     int bit = j * den;
-#line 224
+#line 247
     for(int i = 0;i < den;++ i){
       int x1 = root . x +((i + 1)* size . x)/ den;
                    uvec4 hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
@@ -469,7 +484,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
         if(shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1]+ top[i], area), area)== 1){
 
           marks |= 1u <<(bit + i);
-#line 235
+#line 258
         }
       }
       top[i]= hi0;
@@ -477,7 +492,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       hi0 = hi1;
     }
     top[den]= hi0;
-#line 245
+#line 268
     y0 = y1;
   }
 
@@ -486,24 +501,24 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     int j = b / den;
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }
-#line 259
+#line 283
 }
-#line 268
+#line 292
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 271
+#line 295
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 282
+#line 306
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 296
+#line 320
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -536,12 +551,12 @@ void shadowc_qtWalk(int height){
   }
 
 }
-#line 331
+#line 355
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 340
+#line 364
   shadowc_uniformWalk(5, 0 != 0);
-#line 345
+#line 369
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -558,12 +573,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 363
+#line 387
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 369
+#line 393
   shadowc_qtWalk(3);
-#line 376
+#line 400
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -577,20 +592,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 396
+#line 420
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 404
+#line 428
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 413
+#line 437
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"

@@ -353,44 +353,65 @@ void shadowc_qtLeafBox(vec4 box){
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 #line 157
-bool shadowc_rootLit(vec4 box){
-  float area = shadowc_boxArea(box);
+bool shadowc_rootLit(vec4 m, float area){
   if(!(area > 0.0))return false;
-  vec4 m = shadowc_boxMoments(box, 0);
   if(!(m . x >= shadowc_vD && m . y - m . x * m . x < 0.0001))return false;
   shadowc_aLitArea += area;
   return true;
 }
-#line 191
+#line 167
+bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
+  if(nonPlanarOnly)return area > 0.0 && shadowc_qtAccept(m, area)== 1;
+  return ! shadowc_rootLit(m, area);
+}
+#line 196
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
-  bool walk = true;
-  if(den > 1){
-    vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
-    walk = nonPlanarOnly ? shadowc_qtClassifyBox(whole)== 1 : ! shadowc_rootLit(whole);
+  vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
+  if(den == 1){
+    shadowc_qtLeafBox(whole);
+    return;
   }
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
-#line 209
-  int rows = walk ? den : - 1;
+  uint marks = 0u;
+  bool walk = false;
+#line 214
+  const bool wide = false;
+
+  int steps = 1;
+  for(int s = 0;s < steps;++ s){
+    int k = max(s - 1, 0);
+    vec4 box = s == 0 ? whole : shadowc_subBox(ivec3(k % den, k / den, den));
+    float area = shadowc_boxArea(box);
+    vec4 m = shadowc_boxMoments(box, 0);
+    if(s == 0){
+      walk = shadowc_rootNeedsWalk(m, area, nonPlanarOnly);
+      steps = walk && wide ? 1 + den * den : 1;
+    } else if(area > 0.0 && shadowc_qtAccept(m, area)== 1){
+#line 229
+      shadowc_qtResolveLeaf(box);
+
+    }
+  }
+  int rows = walk && ! wide ? den : - 1;
                uvec4 top[5 + 1];
   int y0 = root . y;
-  uint marks = 0u;
-#line 215
+#line 238
   for(int j = - 1;j < rows;++ j){
     int y1 = root . y +((j + 1)* size . y)/ den;
     int x0 = root . x;
                  uvec4 hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
 
     int bit = j * den;
-#line 224
+#line 247
     for(int i = 0;i < den;++ i){
       int x1 = root . x +((i + 1)* size . x)/ den;
                    uvec4 hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
       if(x1 > x0 && y1 > y0){
         float area = float((x1 - x0)*(y1 - y0));
         if(shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1]+ top[i], area), area)== 1){
-#line 233
+#line 256
           shadowc_qtResolveLeaf(vec4(x0, y0, x1, y1));
 
         }
@@ -400,41 +421,41 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       hi0 = hi1;
     }
     top[den]= hi0;
-#line 245
+#line 268
     y0 = y1;
   }
-#line 259
+#line 283
 }
-#line 268
+#line 292
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 271
+#line 295
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 296
+#line 320
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
-#line 303
+#line 327
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 315
+#line 339
     for(int k = nonPlanar && leaf ? 0 : 1;k < 1;++ k)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
-#line 327
+#line 351
 }
-#line 331
+#line 355
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 340
+#line 364
   shadowc_uniformWalk(5, 0 != 0);
-#line 345
+#line 369
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -451,12 +472,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 363
+#line 387
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 369
+#line 393
   shadowc_qtWalk(3);
-#line 376
+#line 400
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -470,11 +491,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 407
+#line 431
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 413
+#line 437
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
