@@ -249,19 +249,25 @@ def main():
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--only", choices=["generic", "light_size", "study"])
     a = ap.parse_args()
-    with open(DOC) as f:
-        text = f.read()
+    # Run every sweep first and read the doc only then, so that edits made to it while the sweeps
+    # run (minutes) are kept; the doc is replaced atomically.
+    sections = []
     if a.only in (None, "generic"):
         res, seconds = run_sweep(a.shadowc, "generic", a.out, a.reuse)
-        text = replace_section(text, "generic", generic_section(res, seconds))
+        sections.append(("generic", generic_section(res, seconds)))
     if a.only in (None, "light_size"):
         res, seconds = run_sweep(a.shadowc, "light_size", a.out, a.reuse)
-        text = replace_section(text, "light_size", light_section(res, seconds))
+        sections.append(("light_size", light_section(res, seconds)))
     if a.only in (None, "study"):
         res, seconds = run_sweep(a.shadowc, "light_size_study", a.out, a.reuse, ("bench", "sweeps"))
-        text = replace_section(text, "study", study_section(res, seconds) + "\n" + study_plot(res))
-    with open(DOC, "w") as f:
+        sections.append(("study", study_section(res, seconds) + "\n" + study_plot(res)))
+    with open(DOC) as f:
+        text = f.read()
+    for tag, body in sections:
+        text = replace_section(text, tag, body)
+    with open(DOC + ".tmp", "w") as f:
         f.write(text)
+    os.replace(DOC + ".tmp", DOC)
     print("wrote", DOC)
 
 
