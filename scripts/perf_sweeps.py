@@ -47,6 +47,11 @@ def run_sweep(shadowc, name, out, reuse, folder_of_spec=("samples", "sweeps")):
         return json.load(f), seconds
 
 
+def first_seen(rows, key):
+    """The distinct values of row[key] in the order the sweep wrote them."""
+    return list(dict.fromkeys(r[key] for r in rows))
+
+
 def load_average():
     try:
         return "{:.1f}".format(os.getloadavg()[0])
@@ -109,10 +114,7 @@ def light_section(res, seconds):
            "|---|---|---:|---:|---:|"]
     frontier = res["frontier"]
     by_key = {r["key"]: r for r in rows}
-    cases = []
-    for r in rows:
-        if r["case"] not in cases:
-            cases.append(r["case"])
+    cases = first_seen(rows, "case")
     for c in cases:
         members = [by_key[k] for k in frontier.get(c, []) if k in by_key]
         members.sort(key=lambda r: r["total_ms"])
@@ -130,15 +132,9 @@ def study_section(res, seconds):
     largest light the passes of every variant, VSSM's shade and frame against PCSS's."""
     rows = res["rows"]
     r0 = rows[0]
-    lights = []
-    for r in rows:
-        if r["scene"] not in lights:
-            lights.append(r["scene"])
+    lights = first_seen(rows, "scene")
     maps = sorted({r["map"] for r in rows})
-    variants = []
-    for r in rows:
-        if r["variant"] not in variants:
-            variants.append(r["variant"])
+    variants = first_seen(rows, "variant")
     cell = {(r["variant"], r["scene"], r["map"]): r for r in rows}
     shade = lambda r: sum(p["median_ms"] for p in r["passes"] if p["kind"] == "shade")
     took = " in {:.0f} s wall".format(seconds) if seconds else ""
@@ -206,10 +202,7 @@ def study_plot(res):
     docs/plots/light_size_study.svg, written atomically). Returns the markdown that shows it."""
     rows = res["rows"]
     maps = sorted({r["map"] for r in rows})
-    variants = []
-    for r in rows:
-        if r["variant"] not in variants:
-            variants.append(r["variant"])
+    variants = first_seen(rows, "variant")
     width = lambda scene: float(scene.replace("light_", ""))
     folder = os.path.join(ROOT, "docs", "plots")
     os.makedirs(folder, exist_ok=True)
