@@ -336,7 +336,7 @@ void shadowc_qtWalk(int height) {
       else marksHi |= bit;
     } else
 #endif
-    for (int k = nonPlanar && leaf ? 0 : 1; k < 1; ++k) shadowc_qtResolveLeaf(box);
+    if (nonPlanar && leaf) shadowc_qtResolveLeaf(box);  // in place (a 0/1-step loop would cost the same)
     n = nonPlanar && !leaf ? ivec3(2 * n.xy, 2 * n.z)  // Child: the first of the four
                            : shadowc_qtNextNode(n);
   }

@@ -538,7 +538,7 @@ void shadowc_qtWalk(int height){
       else marksHi |= bit;
     } else
 
-    for(int k = nonPlanar && leaf ? 0 : 1;k < 1;++ k)shadowc_qtResolveLeaf(box);
+    if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }

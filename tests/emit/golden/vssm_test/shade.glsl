@@ -444,7 +444,7 @@ void shadowc_qtWalk(int height){
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
 #line 339
-    for(int k = nonPlanar && leaf ? 0 : 1;k < 1;++ k)shadowc_qtResolveLeaf(box);
+    if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
