@@ -173,26 +173,53 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 // root is accepted first (shadowc_rootLit). `nonPlanarOnly`:
 // Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
 // the den x den walk only when it is non-planar (classify accumulates nothing then).
-// With whole-texel corners neighbouring sub-kernels share SAT corners: the walk goes row by row,
-// carries the last column's two corners along a row and the row's bottom corners (`top`) to the
-// next row, so the den x den boxes read (den + 1)^2 corners instead of 4 den^2 (den = 5: 36 texel
-// reads instead of 100). The sums are the same four corners in the same order as sat.glsl's
-// shadowc_summedMean, so every box mean is bit-identical to a separate box query.
-// What lavapipe charges (issue 10, docs/performance.md "Divergent branches on lavapipe"): an
+// What lavapipe charges (issue 10, docs/performance.md "Loops run their first iteration too"): an
 // 8-lane SIMD group runs every branch body and every loop's first iteration, masked, whatever its
 // lanes decide (gallivm pushes an execution mask for an `if` and tests for live lanes only at a
-// loop's end); only further iterations are skipped once no lane is left. So:
-// - the rows are a loop of den steps for lanes whose root needs the walk and of none for the rest
-//   (step -1 reads the root's top edge, which a walk needs anyway);
-// - non-planar sub-kernels are marked in a bit mask and get their PCF in one loop over the set
-//   bits after the boxes, in the walk's order (the PCF sums are their own accumulators, so the
-//   results are bit-identical): a group pays the most PCFs any of its lanes needs, plus one masked
-//   PCF, instead of den^2 masked PCFs (one per sub-kernel `if`). With den^2 > 32 the mask is per
-//   row, resolved after each row. (A mask *array* for the whole walk gave wrong images in the
-//   stability suite; not isolated between glslang, spirv-opt and lavapipe: masks are scalars.)
-// - a root wider than den SAT pieces has its sub-kernels read one box query each, as further steps
-//   of the loop whose step 0 reads the root (below).
-#define SHADOWC_WALK_MASK_ONCE (SHADOWC_UNIFORM_MAX_DEN * SHADOWC_UNIFORM_MAX_DEN <= 32)
+// loop's end); only further iterations are skipped once no lane is left. So the whole walk is ONE
+// loop whose step 0 is the root box, which every lane needs, and whose later steps only walking
+// lanes take (a second loop for the sub-kernels cost every group one masked row: H = 3 alone was
+// faster than the mixed scheme on planar scenes). Each step reads the two corners of two columns
+// of a band (4 texel reads) and sums the two cells left of them, the first against the column
+// carried from the step before:
+// - "box" bands sum the cells into one box: the root (and, for a root wider than den SAT pieces,
+//   each sub-kernel in turn), cut into pieces of at most 255 texels when the int32 SAT is wide
+//   (sat.glsl, summed in the same order as shadowc_summedSum); a box within one piece is one step;
+// - "grid" bands are the rows of the den x den sub-kernels (columns at the sub-kernel edges), each
+//   cell classified as it is read: den = 5 reads 60 corners in 15 steps (4 x 25 as separate boxes).
+// Every sum is the same four corners in the same order as sat.glsl's, so each box mean is
+// bit-identical to a separate box query. Non-planar sub-kernels are marked in a bit mask and get
+// their PCF in one loop over the set bits after the walk, in the walk's order (their sums are their
+// own accumulators, so the results are bit-identical): a group pays the most PCFs any of its lanes
+// needs, plus one masked PCF, instead of a masked PCF per step. With den^2 > 64 (and generic
+// shaders) a leaf's PCF is done in place. (A mask *array* gave wrong images in the stability
+// suite; not isolated between glslang, spirv-opt and lavapipe: masks are scalars.)
+#if SHADOWC_FALLBACK_PCF && SHADOWC_UNIFORM_MAX_DEN * SHADOWC_UNIFORM_MAX_DEN <= 64
+#define SHADOWC_WALK_DEFER 1  // two mask words hold every sub-kernel
+#else
+#define SHADOWC_WALK_DEFER 0
+#endif
+
+#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
+// A box sum accumulated in float (pieces of a wide box) as mean moments over `area` texels.
+vec4 shadowc_walkMean(vec4 sum, float area) {
+#if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
+  return sum / (65536.0 * area);
+#else
+  return shadowc_satMeanOfSum(sum, area);
+#endif
+}
+#endif
+
+#if SHADOWC_WALK_DEFER
+// Mark sub-kernel `bit` for the PCF after the walk.
+void shadowc_walkMark(inout uint marksLo, inout uint marksHi, int bit) {
+  uint m = 1u << (bit & 31);
+  marksLo |= bit < 32 ? m : 0u;
+  marksHi |= bit >= 32 ? m : 0u;
+}
+#endif
+
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if (den == 1) {  // no subdivision: the root is the one leaf (the same corners as the walk's)
@@ -202,74 +229,104 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
-  uint marks = 0u;  // bit j * den + i (or i, per row): sub-kernel (i, j) is non-planar
-  bool walk = false;
-  // Step 0 reads the root box, which every lane needs. A root wider than den SAT pieces (sat.glsl:
-  // a box over 255 texels a side wraps its int32 sum; every sub-kernel is at most ceil(size / den)
-  // texels a side, so only then can one be wide) goes on with its den^2 sub-kernels, one box query
-  // per step; the others leave after step 0, so this costs them no masked wide query.
+  int subs = den * den;
 #if SHADOWC_SAT_WIDE
-  bool wide = SHADOWC_SAT_PIECES > den && max(size.x, size.y) > shadowc_satPiece * den;
+  const int piece = shadowc_satPiece;
+  // Every sub-kernel is at most ceil(size / den) texels a side, so only a root wider than den
+  // pieces can have a sub-kernel wider than one.
+  bool wideSubs = SHADOWC_SAT_PIECES > den && max(size.x, size.y) > piece * den;
 #else
-  const bool wide = false;
+  const int piece = 1 << 30;  // one piece, however wide (fp32 SAT, or int32 boxes within 255)
+  const bool wideSubs = false;
 #endif
-  int steps = 1;
-  for (int s = 0; s < steps; ++s) {
-    int k = max(s - 1, 0);
-    vec4 box = s == 0 ? whole : shadowc_subBox(ivec3(k % den, k / den, den));
-    float area = shadowc_boxArea(box);
-    vec4 m = shadowc_boxMoments(box, 0);
-    if (s == 0) {
-      walk = shadowc_rootNeedsWalk(m, area, nonPlanarOnly);
-      steps = walk && wide ? 1 + den * den : 1;
-    } else if (area > 0.0 && shadowc_qtAccept(m, area) == 1) {
-#if SHADOWC_FALLBACK_PCF && SHADOWC_WALK_MASK_ONCE
-      marks |= 1u << k;  // PCF after the walk
+#if SHADOWC_WALK_DEFER
+  uint marksLo = 0u;  // bit k = j * den + i (k - 32 in marksHi): sub-kernel (i, j) is non-planar
+  uint marksHi = 0u;
+#endif
+  int k = -1;              // box bands: the box (-1 the root, else sub-kernel k); k = subs: grid
+  int j = 0;               // band
+  int c = 0;               // the step reads columns c and c + 1
+  vec4 acc = vec4(0.0);    // the box's sum so far (box bands)
+  shadowc_SatSum lo = shadowc_SatSum(0);  // the carried column's top and bottom corners, and its x
+  shadowc_SatSum hi = shadowc_SatSum(0);
+  int xc = 0;
+  bool walk = false;
+  bool more = true;
+  const int limit = (1 + SHADOWC_UNIFORM_MAX_DEN * SHADOWC_UNIFORM_MAX_DEN) * SHADOWC_SAT_PIECES *
+                        (SHADOWC_SAT_PIECES / 2 + 1) + SHADOWC_UNIFORM_MAX_DEN * (SHADOWC_UNIFORM_MAX_DEN / 2 + 1);
+  for (int step = 0; step < limit && more; ++step) {
+    bool grid = k == subs;
+    // The box (box bands) and its pieces per axis.
+    ivec4 box = k < 0 || !wideSubs ? ivec4(root, root + size) : ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
+    ivec2 cells = max((box.zw - box.xy + piece - 1) / piece, 1);
+    // Band j's rows and the columns c, cb (texel edges): grid bands at the sub-kernel edges, box
+    // bands at the box's piece cuts (sat.glsl's shadowc_satCut).
+    int ncol = grid ? den + 1 : cells.x + 1;
+    int cb = min(c + 1, ncol - 1);
+    int y0 = grid ? root.y + (j * size.y) / den : min(box.y + j * piece, box.w);
+    int y1 = grid ? root.y + ((j + 1) * size.y) / den : min(box.y + (j + 1) * piece, box.w);
+    int xa = grid ? root.x + (c * size.x) / den : min(box.x + c * piece, box.z);
+    int xb = grid ? root.x + (cb * size.x) / den : min(box.x + cb * piece, box.z);
+    shadowc_SatSum la = shadowc_summedCorner(xa - 1, y0 - 1, 0);
+    shadowc_SatSum ha = shadowc_summedCorner(xa - 1, y1 - 1, 0);
+    shadowc_SatSum lb = shadowc_summedCorner(xb - 1, y0 - 1, 0);
+    shadowc_SatSum hb = shadowc_summedCorner(xb - 1, y1 - 1, 0);
+    shadowc_SatSum s1 = ha - hi - la + lo;  // cell (carried column, a)
+    shadowc_SatSum s2 = hb - ha - lb + la;  // cell (a, b)
+    bool cell1 = c > 0 && xa > xc && y1 > y0;
+    bool cell2 = cb > c && xb > xa && y1 > y0;
+    float area1 = float((xa - xc) * (y1 - y0));
+    float area2 = float((xb - xa) * (y1 - y0));
+    // Box bands add their cells in shadowc_summedSum's order (adding 0.0 changes no sum).
+    if (!grid) {
+      acc += cell1 ? vec4(s1) : vec4(0.0);
+      acc += cell2 ? vec4(s2) : vec4(0.0);
+    }
+    int bit = j * den + c;  // grid: sub-kernel (c, j)
+    c += 2;
+    bool bandEnd = c >= ncol;
+    if (bandEnd) {
+      c = 0;
+      ++j;
+    }
+    // Slot 1: grid sub-kernel (c - 1, j).
+    if (grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1) == 1) {
+#if SHADOWC_WALK_DEFER
+      shadowc_walkMark(marksLo, marksHi, bit - 1);
 #else
-      shadowc_qtResolveLeaf(box);
+      shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 #endif
     }
-  }
-  int rows = walk && !wide ? den : -1;
-  shadowc_SatSum top[SHADOWC_UNIFORM_MAX_DEN + 1];  // corners on the current row's top edge
-  int y0 = root.y;
-  // Step j reads the den + 1 corners on the bottom edge of row j and classifies its boxes against
-  // `top`; step -1 reads the root's top edge (y1 = y0: no box).
-  for (int j = -1; j < rows; ++j) {
-    int y1 = root.y + ((j + 1) * size.y) / den;
-    int x0 = root.x;
-    shadowc_SatSum hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
-#if SHADOWC_WALK_MASK_ONCE
-    int bit = j * den;
+    // Slot 2: grid sub-kernel (c, j), or a box whose last piece this step read.
+    float area = grid ? area2 : float((box.z - box.x) * (box.w - box.y));
+    if (grid ? cell2 : bandEnd && j >= cells.y && area > 0.0) {
+      vec4 m = shadowc_walkMean(grid ? vec4(s2) : acc, area);  // = shadowc_satMeanOfSum(s2, area2) on grid
+      bool nonPlanar = k < 0 && !nonPlanarOnly ? !shadowc_rootLit(m, area) : shadowc_qtAccept(m, area) == 1;
+      if (k < 0) {
+        walk = nonPlanar;  // the root: walk on only when it needs it
+      } else if (nonPlanar) {
+#if SHADOWC_WALK_DEFER
+        shadowc_walkMark(marksLo, marksHi, grid ? bit : k);
 #else
-    int bit = 0;
+        shadowc_qtResolveLeaf(grid ? vec4(xa, y0, xb, y1) : vec4(box));
 #endif
-    for (int i = 0; i < den; ++i) {
-      int x1 = root.x + ((i + 1) * size.x) / den;
-      shadowc_SatSum hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
-      if (x1 > x0 && y1 > y0) {  // else an empty sub-kernel (narrower than a texel): area 0
-        float area = float((x1 - x0) * (y1 - y0));
-        if (shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1] + top[i], area), area) == 1) {
-#if SHADOWC_FALLBACK_PCF
-          marks |= 1u << (bit + i);
-#else
-          shadowc_qtResolveLeaf(vec4(x0, y0, x1, y1));  // option 1: lit, one add
-#endif
-        }
       }
-      top[i] = hi0;
-      x0 = x1;
-      hi0 = hi1;
     }
-    top[den] = hi0;
-#if SHADOWC_FALLBACK_PCF && !SHADOWC_WALK_MASK_ONCE
-    for (; marks != 0u; marks &= marks - 1u) shadowc_qtResolveLeaf(shadowc_subBox(ivec3(findLSB(marks), j, den)));
-#endif
-    y0 = y1;
+    lo = lb;
+    hi = hb;
+    xc = xb;
+    if (bandEnd && j >= (grid ? den : cells.y)) {  // the last band of a box or of the grid
+      more = k < 0 ? walk : k + 1 < subs;
+      k = k < 0 && !wideSubs ? subs : k + 1;  // on to the grid, or to the next (wide) sub-kernel
+      j = 0;
+      acc = vec4(0.0);
+    }
   }
-#if SHADOWC_FALLBACK_PCF && SHADOWC_WALK_MASK_ONCE
-  for (; marks != 0u; marks &= marks - 1u) {
-    int b = findLSB(marks);
+#if SHADOWC_WALK_DEFER
+  while ((marksLo | marksHi) != 0u) {
+    int b = marksLo != 0u ? findLSB(marksLo) : 32 + findLSB(marksHi);
+    if (b < 32) marksLo &= marksLo - 1u;
+    else marksHi &= marksHi - 1u;
     int j = b / den;
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }

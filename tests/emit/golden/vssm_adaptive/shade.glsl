@@ -435,7 +435,19 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   if(nonPlanarOnly)return area > 0.0 && shadowc_qtAccept(m, area)== 1;
   return ! shadowc_rootLit(m, area);
 }
-#line 196
+#line 205
+vec4 shadowc_walkMean(vec4 sum, float area){
+
+  return sum /(65536.0 * area);
+#line 211
+}
+#line 216
+void shadowc_walkMark(inout uint marksLo, inout uint marksHi, int bit){
+  uint m = 1u <<(bit & 31);
+  marksLo |= bit < 32 ? m : 0u;
+  marksHi |= bit >= 32 ? m : 0u;
+}
+#line 223
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -445,80 +457,115 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
-  uint marks = 0u;
+  int subs = den * den;
+
+  const int piece = shadowc_satPiece;
+#line 237
+  bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
+#line 243
+  uint marksLo = 0u;
+  uint marksHi = 0u;
+
+  int k = - 1;
+  int j = 0;
+  int c = 0;
+  vec4 acc = vec4(0.0);
+               uvec4 lo = uvec4(0);
+               uvec4 hi = uvec4(0);
+  int xc = 0;
   bool walk = false;
-#line 212
-  bool wide = 17 > den && max(size . x, size . y)> shadowc_satPiece * den;
-#line 216
-  int steps = 1;
-  for(int s = 0;s < steps;++ s){
-    int k = max(s - 1, 0);
-    vec4 box = s == 0 ? whole : shadowc_subBox(ivec3(k % den, k / den, den));
-    float area = shadowc_boxArea(box);
-    vec4 m = shadowc_boxMoments(box, 0);
-    if(s == 0){
-      walk = shadowc_rootNeedsWalk(m, area, nonPlanarOnly);
-      steps = walk && wide ? 1 + den * den : 1;
-    } else if(area > 0.0 && shadowc_qtAccept(m, area)== 1){
+  bool more = true;
+  const int limit =(1 + 5 * 5)* 17 *
+                        (17 / 2 + 1)+ 5 *(5 / 2 + 1);
+  for(int step = 0;step < limit && more;++ step){
+    bool grid = k == subs;
 
-      marks |= 1u << k;
-#line 231
+    ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
+    ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
+#line 264
+    int ncol = grid ? den + 1 : cells . x + 1;
+    int cb = min(c + 1, ncol - 1);
+    int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
+    int y1 = grid ? root . y +((j + 1)* size . y)/ den : min(box . y +(j + 1)* piece, box . w);
+    int xa = grid ? root . x +(c * size . x)/ den : min(box . x + c * piece, box . z);
+    int xb = grid ? root . x +(cb * size . x)/ den : min(box . x + cb * piece, box . z);
+                 uvec4 la = shadowc_summedCorner(xa - 1, y0 - 1, 0);
+                 uvec4 ha = shadowc_summedCorner(xa - 1, y1 - 1, 0);
+                 uvec4 lb = shadowc_summedCorner(xb - 1, y0 - 1, 0);
+                 uvec4 hb = shadowc_summedCorner(xb - 1, y1 - 1, 0);
+                 uvec4 s1 = ha - hi - la + lo;
+                 uvec4 s2 = hb - ha - lb + la;
+    bool cell1 = c > 0 && xa > xc && y1 > y0;
+    bool cell2 = cb > c && xb > xa && y1 > y0;
+    float area1 = float((xa - xc)*(y1 - y0));
+    float area2 = float((xb - xa)*(y1 - y0));
+
+    if(! grid){
+      acc += cell1 ? vec4(s1): vec4(0.0);
+      acc += cell2 ? vec4(s2): vec4(0.0);
     }
-  }
-  int rows = walk && ! wide ? den : - 1;
-               uvec4 top[5 + 1];
-  int y0 = root . y;
-#line 238
-  for(int j = - 1;j < rows;++ j){
-    int y1 = root . y +((j + 1)* size . y)/ den;
-    int x0 = root . x;
-                 uvec4 hi0 = shadowc_summedCorner(x0 - 1, y1 - 1, 0);
+    int bit = j * den + c;
+    c += 2;
+    bool bandEnd = c >= ncol;
+    if(bandEnd){
+      c = 0;
+      ++ j;
+    }
 
-    int bit = j * den;
-#line 247
-    for(int i = 0;i < den;++ i){
-      int x1 = root . x +((i + 1)* size . x)/ den;
-                   uvec4 hi1 = shadowc_summedCorner(x1 - 1, y1 - 1, 0);
-      if(x1 > x0 && y1 > y0){
-        float area = float((x1 - x0)*(y1 - y0));
-        if(shadowc_qtAccept(shadowc_satMeanOfSum(hi1 - hi0 - top[i + 1]+ top[i], area), area)== 1){
+    if(grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1)== 1){
 
-          marks |= 1u <<(bit + i);
-#line 258
-        }
+      shadowc_walkMark(marksLo, marksHi, bit - 1);
+#line 299
+    }
+
+    float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
+    if(grid ? cell2 : bandEnd && j >= cells . y && area > 0.0){
+      vec4 m = shadowc_walkMean(grid ? vec4(s2): acc, area);
+      bool nonPlanar = k < 0 && ! nonPlanarOnly ? ! shadowc_rootLit(m, area): shadowc_qtAccept(m, area)== 1;
+      if(k < 0){
+        walk = nonPlanar;
+      } else if(nonPlanar){
+
+        shadowc_walkMark(marksLo, marksHi, grid ? bit : k);
+#line 313
       }
-      top[i]= hi0;
-      x0 = x1;
-      hi0 = hi1;
     }
-    top[den]= hi0;
-#line 268
-    y0 = y1;
+    lo = lb;
+    hi = hb;
+    xc = xb;
+    if(bandEnd && j >=(grid ? den : cells . y)){
+      more = k < 0 ? walk : k + 1 < subs;
+      k = k < 0 && ! wideSubs ? subs : k + 1;
+      j = 0;
+      acc = vec4(0.0);
+    }
   }
 
-  for(;marks != 0u;marks &= marks - 1u){
-    int b = findLSB(marks);
+  while((marksLo | marksHi)!= 0u){
+    int b = marksLo != 0u ? findLSB(marksLo): 32 + findLSB(marksHi);
+    if(b < 32)marksLo &= marksLo - 1u;
+    else marksHi &= marksHi - 1u;
     int j = b / den;
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }
-#line 283
+#line 340
 }
-#line 292
+#line 349
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 295
+#line 352
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 306
+#line 363
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 320
+#line 377
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -551,12 +598,12 @@ void shadowc_qtWalk(int height){
   }
 
 }
-#line 355
+#line 412
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 364
+#line 421
   shadowc_uniformWalk(5, 0 != 0);
-#line 369
+#line 426
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -573,12 +620,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 387
+#line 444
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 393
+#line 450
   shadowc_qtWalk(3);
-#line 400
+#line 457
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -592,20 +639,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 420
+#line 477
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 428
+#line 485
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 437
+#line 494
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
