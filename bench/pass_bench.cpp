@@ -126,8 +126,9 @@ std::optional<ImageFormat> writtenFormat(const Manifest& m, const Pass& p) {
 
 // Texel fetches per shaded pixel, worst case, from the spec (what the lookup templates read):
 // a SAT box is 4 texel reads of the SAT (sat.glsl; 16 with bilinear corners), a uniform m x m walk
-// with whole-texel corners shares corners along rows and between rows, (m + 1)^2 reads (vssm.glsl
-// shadowc_uniformWalk), plus the root's 4 first (both `subdivide` forms test it); a quadtree counts every node, a PCF
+// with whole-texel corners reads each row two columns (4 corners) a step, sharing corners along a
+// row: 4 m ceil((m + 1) / 2) reads (vssm.glsl shadowc_uniformWalk), plus the root's 4 first (both
+// `subdivide` forms test it); a quadtree counts every node, a PCF
 // leaf n^2 reads, a PCF tap 1 depth read (bilinear = 4 texels, counted as 1 gather-like sample here), a min-max early
 // out 4 reads of one pyramid level.
 std::string fetchesPerPixel(const FilterSpec& s) {
@@ -144,7 +145,7 @@ std::string fetchesPerPixel(const FilterSpec& s) {
   const long long perBox = s.storage.fractionalCorners ? 16 : 4;
   auto reads = [&](Subdivision sub, int m, int h) -> long long {
     if (sub == Subdivision::Uniform && m > 1)
-      return perBox + (s.storage.fractionalCorners ? perBox * m * m : (m + 1LL) * (m + 1));
+      return perBox + (s.storage.fractionalCorners ? perBox * m * m : 4LL * m * ((m + 2) / 2));
     if (sub == Subdivision::Quadtree) return perBox * (((1LL << (2 * (h + 1))) - 1) / 3);  // every node
     return perBox;
   };

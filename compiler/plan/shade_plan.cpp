@@ -134,8 +134,8 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   defCode("SHADOWC_BLOCKER_SUBDIVISION", subdivisionCode(s.blocker.subdivision));
   defInt("SHADOWC_BLOCKER_M", std::max(1, s.blocker.uniformM));
   defInt("SHADOWC_BLOCKER_HEIGHT", s.blocker.quadtreeHeight);
-  // The uniform walk carries a row of den + 1 SAT corners in an array of this size + 1 (vssm.glsl);
-  // a generic shader sizes it for the language's largest m and n (generic_block.cpp).
+  // The uniform walk's mark words and step bound are sized by the larger den (vssm.glsl); a generic
+  // shader sizes them for the language's largest m and n (generic_block.cpp).
   if (vssm) {
     const int blockerDen = s.blocker.subdivision == Subdivision::Uniform ? s.blocker.uniformM : 1;
     const int kernelDen = s.kernel.subdivision == Subdivision::Uniform ? s.kernel.uniformN : 1;

@@ -123,11 +123,11 @@ enum class BlockerKind {
 enum class SamplePattern { Grid, Poisson };
 enum class Subdivision { None, Uniform, Quadtree };
 // The largest uniform subdivisions the checker accepts (blocker m x m, kernel n x n). The uniform
-// walk of vssm.glsl keeps a row of den + 1 SAT corners and a bit per sub-kernel of a row, so a
-// generic shader, whose m and n are uniforms, sizes those for the larger of the two.
+// walk of vssm.glsl marks non-planar sub-kernels in two uint words when den^2 <= 64 and bounds its
+// loop by den (SHADOWC_UNIFORM_MAX_DEN), so a generic shader, whose m and n are uniforms, sizes
+// those for the larger of the two.
 inline constexpr int kMaxUniformM = 16;
 inline constexpr int kMaxUniformN = 32;
-static_assert(kMaxUniformM <= 32 && kMaxUniformN <= 32, "vssm.glsl marks a row's sub-kernels in one uint");
 struct BlockerSpec {
   BlockerKind kind = BlockerKind::None;
   int taps = 16;  // Search: number of taps

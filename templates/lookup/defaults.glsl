@@ -164,7 +164,7 @@
 #ifndef SHADOWC_BLOCKER_HEIGHT
 #define SHADOWC_BLOCKER_HEIGHT 3
 #endif
-// The largest den of this shader's uniform walks (vssm.glsl sizes its carried corners by it); the
+// The largest den of this shader's uniform walks (vssm.glsl sizes its marks and step bound by it); the
 // planner defines it for every VSSM filter, the language's largest n (kMaxUniformN) otherwise.
 #ifndef SHADOWC_UNIFORM_MAX_DEN
 #define SHADOWC_UNIFORM_MAX_DEN 32

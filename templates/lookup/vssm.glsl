@@ -173,7 +173,7 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 // root is accepted first (shadowc_rootLit). `nonPlanarOnly`:
 // Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
 // the den x den walk only when it is non-planar (classify accumulates nothing then).
-// What lavapipe charges (issue 10, docs/performance.md "Loops run their first iteration too"): an
+// What lavapipe charges (issue 10, docs/performance.md "One loop for the whole uniform walk"): an
 // 8-lane SIMD group runs every branch body and every loop's first iteration, masked, whatever its
 // lanes decide (gallivm pushes an execution mask for an `if` and tests for live lanes only at a
 // loop's end); only further iterations are skipped once no lane is left. So the whole walk is ONE
@@ -186,7 +186,7 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 //   each sub-kernel in turn), cut into pieces of at most 255 texels when the int32 SAT is wide
 //   (sat.glsl, summed in the same order as shadowc_summedSum); a box within one piece is one step;
 // - "grid" bands are the rows of the den x den sub-kernels (columns at the sub-kernel edges), each
-//   cell classified as it is read: den = 5 reads 60 corners in 15 steps (4 x 25 as separate boxes).
+//   cell classified as it is read: den = 5 reads 60 corners in 15 steps (100 as separate boxes).
 // Every sum is the same four corners in the same order as sat.glsl's, so each box mean is
 // bit-identical to a separate box query. Non-planar sub-kernels are marked in a bit mask and get
 // their PCF in one loop over the set bits after the walk, in the walk's order (their sums are their
