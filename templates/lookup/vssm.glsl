@@ -289,7 +289,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       c = 0;
       ++j;
     }
-    // Slot 1: grid sub-kernel (c - 1, j).
+    // Slot 1 (c, j as the step read them, before the advance above): grid sub-kernel (c - 1, j).
     if (grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1) == 1) {
 #if SHADOWC_WALK_DEFER
       shadowc_walkMark(marksLo, marksHi, bit - 1);
@@ -297,7 +297,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 #endif
     }
-    // Slot 2: grid sub-kernel (c, j), or a box whose last piece this step read.
+    // Slot 2: grid sub-kernel (c, j) likewise, or a box whose last piece this step read.
     float area = grid ? area2 : float((box.z - box.x) * (box.w - box.y));
     if (grid ? cell2 : bandEnd && j >= cells.y && area > 0.0) {
       vec4 m = shadowc_walkMean(grid ? vec4(s2) : acc, area);  // = shadowc_satMeanOfSum(s2, area2) on grid
