@@ -19,6 +19,7 @@
 #include "compiler/driver/driver.h"
 #include "compiler/emit/shader_emitter.h"
 #include "compiler/plan/planner.h"
+#include "runtime/executor/pass_executor.h"  // rt::median
 #include "shadowc_source_dir.h"
 
 namespace fs = std::filesystem;
@@ -27,11 +28,6 @@ using Clock = std::chrono::steady_clock;
 namespace {
 
 double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::duration<double, std::milli>(b - a).count(); }
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
 
 std::string recipeFlags() {
   std::string s;
@@ -112,7 +108,7 @@ int main(int argc, char** argv) {
       full.push_back(ms(t1, t2));
       ext.push_back(ms(t2, t3));
     }
-    const double a = median(in), b = median(full), c = median(ext);
+    const double a = shadowc::rt::median(in), b = shadowc::rt::median(full), c = shadowc::rt::median(ext);
     sumIn += a, sumFull += b, sumExt += c;
     ratios.push_back(c / a);
     fmt::print("| {} | {} | {:.1f} | {:.1f} | {:.1f} | {:.2f}× |\n", name, shaders.size(), a, b, c, c / a);
@@ -122,6 +118,6 @@ int main(int argc, char** argv) {
   fmt::print(
       "\n{} filters, {} runs each (medians). Totals: in-process compile {:.0f} ms, full driver compile {:.0f} ms, "
       "external programs {:.0f} ms; external/in-process: median {:.2f}×, total {:.2f}×\n",
-      ratios.size(), n, sumIn, sumFull, sumExt, median(ratios), sumExt / sumIn);
+      ratios.size(), n, sumIn, sumFull, sumExt, shadowc::rt::median(ratios), sumExt / sumIn);
   return 0;
 }

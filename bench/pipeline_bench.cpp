@@ -88,11 +88,6 @@ std::vector<Source> samples(const std::string& only) {
   return out;
 }
 
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  return v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]);
-}
-
 // In the child: create the pipelines and run once; one line "create <ms>" then "<pass> <ms>".
 void deviceChild(const CompiledPasses& passes, int fd) {
   rt::VulkanContext ctx;
@@ -189,8 +184,8 @@ int main(int argc, char** argv) try {
     if (!artifact) continue;
     const DeviceResult d = onDevice(artifact->passes(), limit);
     if (!d.finished) {
-      fmt::print("| {} | {:.0f} ({:.0f}) | | killed after {:.0f} s (limit) | > {} | {:.1f} |\n", s.name, median(times),
-                 median(cpuTimes), d.seconds, limit, d.cpuSeconds);
+      fmt::print("| {} | {:.0f} ({:.0f}) | | killed after {:.0f} s (limit) | > {} | {:.1f} |\n", s.name,
+                 rt::median(times), rt::median(cpuTimes), d.seconds, limit, d.cpuSeconds);
       continue;
     }
     std::istringstream in(d.lines);
@@ -204,8 +199,8 @@ int main(int argc, char** argv) try {
       perPass += fmt::format("{}{} {:.0f}", perPass.empty() ? "" : ", ", name, ms);
       total += ms;
     }
-    fmt::print("| {} | {:.0f} ({:.0f}) | {:.0f} | {} | {:.2f} | {:.1f} |\n", s.name, median(times), median(cpuTimes),
-               create, perPass, (create + total) / 1000, d.cpuSeconds);
+    fmt::print("| {} | {:.0f} ({:.0f}) | {:.0f} | {} | {:.2f} | {:.1f} |\n", s.name, rt::median(times),
+               rt::median(cpuTimes), create, perPass, (create + total) / 1000, d.cpuSeconds);
     std::fflush(stdout);
   }
   return 0;

@@ -37,14 +37,14 @@ std::vector<uint32_t> spirvWords(const CompiledPasses& compiled, const Pass& pas
   return words;
 }
 
+}  // namespace
+
 double median(std::vector<double> v) {
   if (v.empty()) return 0;
   std::sort(v.begin(), v.end());
   const size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
-
-}  // namespace
 
 std::array<uint32_t, 3> dispatchGroups(const Pass& pass, uint32_t mapSize, uint32_t screenWidth,
                                        uint32_t screenHeight) {
@@ -534,6 +534,7 @@ TimingResult PassExecutor::time(int warmup, int runs) {
         {p.name, p.kind, median(perPass[i]), *std::min_element(perPass[i].begin(), perPass[i].end())});
   }
   result.totalMs = median(totals);
+  result.runTotalsMs = std::move(totals);
   return result;
 }
 

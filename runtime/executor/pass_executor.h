@@ -33,10 +33,15 @@ struct PassTiming {
 };
 
 struct TimingResult {
-  std::vector<PassTiming> passes;  // manifest order
-  double totalMs = 0;              // median over runs of (stamp after the last pass - stamp before the first)
+  std::vector<PassTiming> passes;   // manifest order
+  double totalMs = 0;               // median over runs of (stamp after the last pass - stamp before the first)
+  std::vector<double> runTotalsMs;  // each timed run's total, in run order (interleaved ratios pair them)
   int warmup = 0, runs = 0;
 };
+
+// The timings' median: the middle value, or the mean of the middle two; 0 when empty. The
+// benchmarks use this one too.
+double median(std::vector<double> v);
 
 // Workgroup counts for a pass: Texels -> ceil(w/lx) x ceil(h/ly); Rows -> one invocation per
 // row along x (gl_GlobalInvocationID.x = row), ceil(h/lx) groups; Columns -> one per column,

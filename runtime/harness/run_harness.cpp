@@ -2,6 +2,7 @@
 
 #include <fmt/core.h>
 
+#include <algorithm>
 #include <chrono>
 #include <memory>
 
@@ -24,16 +25,8 @@ const HostImage* inputFor(ImageRole role, const RunInputs& inputs) {
   return nullptr;
 }
 
-}  // namespace
-
-RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const RunInputs& inputs,
-                     const RunOptions& options) {
-  if (options.warmup < 0 || options.runs < 0) throw ExecutorError("warm-up and timed run counts must be >= 0");
-  RunOutputs out;
-  const auto start = std::chrono::steady_clock::now();
-  PassExecutor ex(ctx, passes, inputs.mapSize, inputs.width, inputs.height);
-  out.pipelineCreateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-
+// The frame and every input image by role; returns the output_visibility image's name.
+std::string setInputs(PassExecutor& ex, const CompiledPasses& passes, const RunInputs& inputs) {
   ex.setFrame(inputs.frame);
   for (const ImageDesc& image : passes.manifest.images) {
     const HostImage* input = inputFor(image.role, inputs);
@@ -45,6 +38,20 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
   }
   const std::string output = ex.imageWithRole(ImageRole::OutputVisibility);
   if (output.empty()) throw ExecutorError("the manifest has no output_visibility image");
+  return output;
+}
+
+}  // namespace
+
+RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const RunInputs& inputs,
+                     const RunOptions& options) {
+  if (options.warmup < 0 || options.runs < 0) throw ExecutorError("warm-up and timed run counts must be >= 0");
+  RunOutputs out;
+  const auto start = std::chrono::steady_clock::now();
+  PassExecutor ex(ctx, passes, inputs.mapSize, inputs.width, inputs.height);
+  out.pipelineCreateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+
+  const std::string output = setInputs(ex, passes, inputs);
 
   // The last run leaves the outputs in place for the downloads.
   if (options.runs > 0) {
@@ -54,6 +61,41 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
   }
   out.visibility = ex.download(output).channel(0);
   for (const std::string& name : options.downloads) out.images.emplace(name, ex.download(name));
+  return out;
+}
+
+std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup,
+                                          int rounds) {
+  if (warmup < 0 || rounds < 1) throw ExecutorError("interleaved timing needs warm-up >= 0 and rounds >= 1");
+  std::vector<std::unique_ptr<PassExecutor>> ex;
+  for (const TimedRun& r : runs) {
+    if (!r.passes || !r.inputs) throw ExecutorError("interleaved timing: a run without passes or inputs");
+    ex.push_back(std::make_unique<PassExecutor>(ctx, *r.passes, r.inputs->mapSize, r.inputs->width, r.inputs->height));
+    setInputs(*ex.back(), *r.passes, *r.inputs);
+  }
+  for (auto& e : ex)
+    for (int i = 0; i < warmup; ++i) e->run();
+  // perRun[i][round] = that round's one-run timing of run i.
+  std::vector<std::vector<TimingResult>> perRun(ex.size());
+  for (int round = 0; round < rounds; ++round)
+    for (size_t k = 0; k < ex.size(); ++k) {
+      const size_t i = round % 2 ? ex.size() - 1 - k : k;
+      perRun[i].push_back(ex[i]->time(0, 1));
+    }
+  std::vector<TimingResult> out(ex.size());
+  for (size_t i = 0; i < ex.size(); ++i) {
+    TimingResult& t = out[i];
+    t.warmup = warmup;
+    t.runs = rounds;
+    for (const TimingResult& one : perRun[i]) t.runTotalsMs.push_back(one.totalMs);
+    t.totalMs = median(t.runTotalsMs);
+    for (size_t p = 0; p < perRun[i].front().passes.size(); ++p) {
+      std::vector<double> ms;
+      for (const TimingResult& one : perRun[i]) ms.push_back(one.passes[p].medianMs);
+      const PassTiming& first = perRun[i].front().passes[p];
+      t.passes.push_back({first.name, first.kind, median(ms), *std::min_element(ms.begin(), ms.end())});
+    }
+  }
   return out;
 }
 

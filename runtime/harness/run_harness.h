@@ -27,24 +27,36 @@ class VulkanContext;
 struct RunInputs {
   ShadowcFrame frame{};
   uint32_t mapSize = 0, width = 0, height = 0;  // shadow-map side, screen size
-  HostImage lightDepth;                          // InputDepth, R32F map x map
-  HostImage position, normal;                    // InputPosition / InputNormal, RGBA32F w x h
+  HostImage lightDepth;                         // InputDepth, R32F map x map
+  HostImage position, normal;                   // InputPosition / InputNormal, RGBA32F w x h
 };
 
 struct RunOptions {
-  int warmup = 0;  // untimed runs first (lavapipe JIT-compiles on the first dispatch)
-  int runs = 0;    // timed runs; 0 = one untimed run, no timing
+  int warmup = 0;                      // untimed runs first (lavapipe JIT-compiles on the first dispatch)
+  int runs = 0;                        // timed runs; 0 = one untimed run, no timing
   std::vector<std::string> downloads;  // intermediate images to read back (level 0, layer 0)
 };
 
 struct RunOutputs {
-  std::vector<float> visibility;          // OutputVisibility, channel 0, width x height
-  std::optional<TimingResult> timing;     // when runs > 0
+  std::vector<float> visibility;            // OutputVisibility, channel 0, width x height
+  std::optional<TimingResult> timing;       // when runs > 0
   std::map<std::string, HostImage> images;  // the requested downloads
-  double pipelineCreateMs = 0;            // executor construction (pipelines, images, descriptors)
+  double pipelineCreateMs = 0;              // executor construction (pipelines, images, descriptors)
 };
 
 RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const RunInputs& inputs,
                      const RunOptions& options = {});
+
+// Several filters or scenes timed in turn: every one warmed up first, then round after round one
+// timed run of each (the order reversed every other round), so that a slow minute on a shared
+// machine slows all of them alike. A ratio between two of them then holds far better than one
+// between two runs made minutes apart (docs/performance.md "Light size, interleaved"). Each
+// result's medians, minima and runTotalsMs are over the rounds, in round order.
+struct TimedRun {
+  const CompiledPasses* passes = nullptr;
+  const RunInputs* inputs = nullptr;
+};
+std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup,
+                                          int rounds);
 
 }  // namespace shadowc::rt

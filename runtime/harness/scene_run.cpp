@@ -65,11 +65,7 @@ std::shared_ptr<const PreparedScene> prepareSceneWithCascades(VulkanContext& ctx
   return p;
 }
 
-SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, const PreparedScene& scene,
-                          const RunOptions& options) {
-  if (scene.reference.size() != scene.mask.size())
-    throw std::invalid_argument("scene '" + scene.scene.name +
-                                "' was prepared without its reference (traceReference = false)");
+RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene) {
   // The runtime knows no technique, but the projection is the frame's: a filter reads the map
   // through its light's (frame.glsl or frame_ortho.glsl), so a sun filter needs a sun scene.
   // A point filter reads a cube atlas (frame_cube.glsl), so it needs a point scene.
@@ -102,6 +98,15 @@ SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, cons
   inputs.lightDepth = scene.raster.lightDepth;
   inputs.position = scene.raster.gbufferPosition;
   inputs.normal = scene.raster.gbufferNormal;
+  return inputs;
+}
+
+SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, const PreparedScene& scene,
+                          const RunOptions& options) {
+  if (scene.reference.size() != scene.mask.size())
+    throw std::invalid_argument("scene '" + scene.scene.name +
+                                "' was prepared without its reference (traceReference = false)");
+  const RunInputs inputs = sceneInputs(passes, scene);
   SceneRunResult r;
   r.outputs = runPasses(ctx, passes, inputs, options);
   r.metrics = computeMetrics(r.outputs.visibility, scene.reference, scene.mask);

@@ -73,6 +73,10 @@ struct SceneRunResult {
   Metrics metrics;     // outputs.visibility against the reference over the geometry mask
 };
 
+// The harness inputs of a prepared scene for a filter: its frame, light depth and G-buffer.
+// Throws std::invalid_argument when the filter's light type or cascades are not the scene's.
+RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene);
+
 SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, const PreparedScene& scene,
                           const RunOptions& options = {});
 

@@ -1,6 +1,7 @@
 // The run harness (runtime/harness/run_harness.h) with a hand-written one-pass manifest: inputs
 // go to the images with their roles, the visibility comes back exact, timing only when asked,
 // the requested intermediate images are read back; a role without an input is one clear error.
+// Interleaved timing (light_bench) gives each run its own rounds, and refuses what runPasses does.
 #include "runtime/harness/run_harness.h"
 
 #include <gtest/gtest.h>
@@ -84,6 +85,41 @@ TEST_F(RunHarnessTest, TimedRunsReportEveryPass) {
   ASSERT_EQ(out.timing->passes.size(), 1u);
   EXPECT_EQ(out.timing->passes[0].name, "shade");
   EXPECT_EQ(out.visibility[0], 1.125f);  // the last timed run leaves the output
+  ASSERT_EQ(out.timing->runTotalsMs.size(), 3u);
+  EXPECT_EQ(out.timing->totalMs, rt::median(out.timing->runTotalsMs));
+}
+
+TEST_F(RunHarnessTest, InterleavedTimingGivesEachRunItsRounds) {
+  const CompiledPasses passes = onePass();
+  const rt::RunInputs a = inputs();
+  rt::RunInputs b = inputs();
+  b.frame.mapInfo[1] = 0.5f;
+  const std::vector<rt::TimingResult> t = rt::timeInterleaved(context(), {{&passes, &a}, {&passes, &b}}, 1, 5);
+  ASSERT_EQ(t.size(), 2u);
+  for (const rt::TimingResult& r : t) {
+    EXPECT_EQ(r.warmup, 1);
+    EXPECT_EQ(r.runs, 5);
+    ASSERT_EQ(r.runTotalsMs.size(), 5u);
+    for (double ms : r.runTotalsMs) EXPECT_GT(ms, 0.0);
+    EXPECT_EQ(r.totalMs, rt::median(r.runTotalsMs));
+    ASSERT_EQ(r.passes.size(), 1u);
+    EXPECT_EQ(r.passes[0].name, "shade");
+    EXPECT_LE(r.passes[0].minMs, r.passes[0].medianMs);
+  }
+}
+
+TEST_F(RunHarnessTest, InterleavedTimingRefusesAMissingInputAndNoRounds) {
+  const CompiledPasses passes = onePass();
+  const rt::RunInputs a = inputs();
+  rt::RunInputs missing = inputs();
+  missing.lightDepth = {};
+  try {
+    rt::timeInterleaved(context(), {{&passes, &a}, {&passes, &missing}}, 0, 3);
+    FAIL() << "expected an error for the second run's missing input_depth";
+  } catch (const rt::ExecutorError& e) {
+    EXPECT_NE(std::string(e.what()).find("no such input"), std::string::npos) << e.what();
+  }
+  EXPECT_THROW(rt::timeInterleaved(context(), {{&passes, &a}}, 0, 0), rt::ExecutorError);
 }
 
 TEST_F(RunHarnessTest, ARoleWithoutAnInputIsAnError) {
