@@ -146,6 +146,24 @@ void shadowc_qtLeafBox(vec4 box) {
   if (shadowc_qtClassifyBox(box) == 1) shadowc_qtResolveLeaf(box);
 }
 
+#if SHADOWC_FALLBACK_PCF
+// The two mask words of the non-planar leaves whose PCF runs after a walk (shadowc_uniformWalk,
+// shadowc_qtWalk): bit b (0..63) of lo (b < 32) or hi. Set it when `on`.
+void shadowc_markSet(inout uint lo, inout uint hi, int b, bool on) {
+  uint m = on ? 1u << (b & 31) : 0u;
+  lo |= b < 32 ? m : 0u;
+  hi |= b >= 32 ? m : 0u;
+}
+
+// The lowest set bit, cleared (the walk's own order); call while (lo | hi) != 0.
+int shadowc_markPop(inout uint lo, inout uint hi) {
+  int b = lo != 0u ? findLSB(lo) : 32 + findLSB(hi);
+  if (b < 32) lo &= lo - 1u;
+  else hi &= hi - 1u;
+  return b;
+}
+#endif
+
 // Callbacks of the generated unrolled traversal (quadtree_tables.cpp).
 bool shadowc_qtVisit(ivec3 node) { return shadowc_qtClassifyBox(shadowc_qtBox(node)) == 1; }
 void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
@@ -211,14 +229,6 @@ vec4 shadowc_walkMean(vec4 sum, float area) {
 }
 #endif
 
-#if SHADOWC_WALK_DEFER
-// Mark sub-kernel `bit` for the PCF after the walk.
-void shadowc_walkMark(inout uint marksLo, inout uint marksHi, int bit) {
-  uint m = 1u << (bit & 31);
-  marksLo |= bit < 32 ? m : 0u;
-  marksHi |= bit >= 32 ? m : 0u;
-}
-#endif
 
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
@@ -292,7 +302,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     // Slot 1 (c, j as the step read them, before the advance above): grid sub-kernel (c - 1, j).
     if (grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1) == 1) {
 #if SHADOWC_WALK_DEFER
-      shadowc_walkMark(marksLo, marksHi, bit - 1);
+      shadowc_markSet(marksLo, marksHi, bit - 1, true);
 #else
       shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 #endif
@@ -301,12 +311,12 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     float area = grid ? area2 : float((box.z - box.x) * (box.w - box.y));
     if (grid ? cell2 : bandEnd && j >= cells.y && area > 0.0) {
       vec4 m = shadowc_walkMean(grid ? vec4(s2) : acc, area);  // = shadowc_satMeanOfSum(s2, area2) on grid
-      bool nonPlanar = k < 0 && !nonPlanarOnly ? !shadowc_rootLit(m, area) : shadowc_qtAccept(m, area) == 1;
+      bool nonPlanar = k < 0 ? shadowc_rootNeedsWalk(m, area, nonPlanarOnly) : shadowc_qtAccept(m, area) == 1;
       if (k < 0) {
         walk = nonPlanar;  // the root: walk on only when it needs it
       } else if (nonPlanar) {
 #if SHADOWC_WALK_DEFER
-        shadowc_walkMark(marksLo, marksHi, grid ? bit : k);
+        shadowc_markSet(marksLo, marksHi, grid ? bit : k, true);
 #else
         shadowc_qtResolveLeaf(grid ? vec4(xa, y0, xb, y1) : vec4(box));
 #endif
@@ -324,9 +334,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   }
 #if SHADOWC_WALK_DEFER
   while ((marksLo | marksHi) != 0u) {
-    int b = marksLo != 0u ? findLSB(marksLo) : 32 + findLSB(marksHi);
-    if (b < 32) marksLo &= marksLo - 1u;
-    else marksHi &= marksHi - 1u;
+    int b = shadowc_markPop(marksLo, marksHi);
     int j = b / den;
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }
@@ -387,10 +395,7 @@ void shadowc_qtWalk(int height) {
     bool leaf = n.z >= (1 << height);
 #if SHADOWC_FALLBACK_PCF
     if (defer) {
-      int b = shadowc_qtMorton(n.xy);
-      uint bit = nonPlanar && leaf ? 1u << (b & 31) : 0u;
-      if (b < 32) marksLo |= bit;
-      else marksHi |= bit;
+      shadowc_markSet(marksLo, marksHi, shadowc_qtMorton(n.xy), nonPlanar && leaf);
     } else
 #endif
     if (nonPlanar && leaf) shadowc_qtResolveLeaf(box);  // in place (a 0/1-step loop would cost the same)
@@ -399,9 +404,7 @@ void shadowc_qtWalk(int height) {
   }
 #if SHADOWC_FALLBACK_PCF
   while ((marksLo | marksHi) != 0u) {
-    int b = marksLo != 0u ? findLSB(marksLo) : 32 + findLSB(marksHi);
-    if (b < 32) marksLo &= marksLo - 1u;
-    else marksHi &= marksHi - 1u;
+    int b = shadowc_markPop(marksLo, marksHi);
     shadowc_qtResolveLeaf(shadowc_qtBox(ivec3(shadowc_qtUnmorton(b), shadowc_qtUnmorton(b >> 1), 1 << height)));
   }
 #endif

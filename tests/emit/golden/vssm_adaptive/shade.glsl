@@ -420,34 +420,41 @@ void shadowc_qtResolveLeaf(vec4 box){
 void shadowc_qtLeafBox(vec4 box){
   if(shadowc_qtClassifyBox(box)== 1)shadowc_qtResolveLeaf(box);
 }
-#line 150
+#line 152
+void shadowc_markSet(inout uint lo, inout uint hi, int b, bool on){
+  uint m = on ? 1u <<(b & 31): 0u;
+  lo |= b < 32 ? m : 0u;
+  hi |= b >= 32 ? m : 0u;
+}
+#line 159
+int shadowc_markPop(inout uint lo, inout uint hi){
+  int b = lo != 0u ? findLSB(lo): 32 + findLSB(hi);
+  if(b < 32)lo &= lo - 1u;
+  else hi &= hi - 1u;
+  return b;
+}
+#line 168
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
-#line 157
+#line 175
 bool shadowc_rootLit(vec4 m, float area){
   if(!(area > 0.0))return false;
   if(!(m . x >= shadowc_vD && m . y - m . x * m . x < 0.0001))return false;
   shadowc_aLitArea += area;
   return true;
 }
-#line 167
+#line 185
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   if(nonPlanarOnly)return area > 0.0 && shadowc_qtAccept(m, area)== 1;
   return ! shadowc_rootLit(m, area);
 }
-#line 205
+#line 223
 vec4 shadowc_walkMean(vec4 sum, float area){
 
   return sum /(65536.0 * area);
-#line 211
+#line 229
 }
-#line 216
-void shadowc_walkMark(inout uint marksLo, inout uint marksHi, int bit){
-  uint m = 1u <<(bit & 31);
-  marksLo |= bit < 32 ? m : 0u;
-  marksHi |= bit >= 32 ? m : 0u;
-}
-#line 223
+#line 233
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -460,9 +467,9 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   int subs = den * den;
 
   const int piece = shadowc_satPiece;
-#line 237
+#line 247
   bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
-#line 243
+#line 253
   uint marksLo = 0u;
   uint marksHi = 0u;
 
@@ -482,7 +489,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 264
+#line 274
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -514,20 +521,20 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     if(grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1)== 1){
 
-      shadowc_walkMark(marksLo, marksHi, bit - 1);
-#line 299
+      shadowc_markSet(marksLo, marksHi, bit - 1, true);
+#line 309
     }
 
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
     if(grid ? cell2 : bandEnd && j >= cells . y && area > 0.0){
       vec4 m = shadowc_walkMean(grid ? vec4(s2): acc, area);
-      bool nonPlanar = k < 0 && ! nonPlanarOnly ? ! shadowc_rootLit(m, area): shadowc_qtAccept(m, area)== 1;
+      bool nonPlanar = k < 0 ? shadowc_rootNeedsWalk(m, area, nonPlanarOnly): shadowc_qtAccept(m, area)== 1;
       if(k < 0){
         walk = nonPlanar;
       } else if(nonPlanar){
 
-        shadowc_walkMark(marksLo, marksHi, grid ? bit : k);
-#line 313
+        shadowc_markSet(marksLo, marksHi, grid ? bit : k, true);
+#line 323
       }
     }
     lo = lb;
@@ -542,30 +549,28 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   }
 
   while((marksLo | marksHi)!= 0u){
-    int b = marksLo != 0u ? findLSB(marksLo): 32 + findLSB(marksHi);
-    if(b < 32)marksLo &= marksLo - 1u;
-    else marksHi &= marksHi - 1u;
+    int b = shadowc_markPop(marksLo, marksHi);
     int j = b / den;
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }
-#line 340
+#line 348
 }
-#line 349
+#line 357
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 352
+#line 360
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 363
+#line 371
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 377
+#line 385
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -579,10 +584,7 @@ void shadowc_qtWalk(int height){
     bool leaf = n . z >=(1 << height);
 
     if(defer){
-      int b = shadowc_qtMorton(n . xy);
-      uint bit = nonPlanar && leaf ? 1u <<(b & 31): 0u;
-      if(b < 32)marksLo |= bit;
-      else marksHi |= bit;
+      shadowc_markSet(marksLo, marksHi, shadowc_qtMorton(n . xy), nonPlanar && leaf);
     } else
 
     if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
@@ -591,19 +593,17 @@ void shadowc_qtWalk(int height){
   }
 
   while((marksLo | marksHi)!= 0u){
-    int b = marksLo != 0u ? findLSB(marksLo): 32 + findLSB(marksHi);
-    if(b < 32)marksLo &= marksLo - 1u;
-    else marksHi &= marksHi - 1u;
+    int b = shadowc_markPop(marksLo, marksHi);
     shadowc_qtResolveLeaf(shadowc_qtBox(ivec3(shadowc_qtUnmorton(b), shadowc_qtUnmorton(b >> 1), 1 << height)));
   }
 
 }
-#line 412
+#line 415
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 421
+#line 424
   shadowc_uniformWalk(5, 0 != 0);
-#line 426
+#line 429
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -620,12 +620,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 444
+#line 447
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 450
+#line 453
   shadowc_qtWalk(3);
-#line 457
+#line 460
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -639,20 +639,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 477
+#line 480
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 485
+#line 488
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 494
+#line 497
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
