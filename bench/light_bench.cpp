@@ -8,7 +8,9 @@
 // largest light of each map size through the run harness's interleaved timing
 // (rt::timeInterleaved: both warmed up, then round after round one timed frame of each), so that
 // both cells of the ratio see the same minute. Per variant and map it prints both medians, their
-// ratio, the median and range of the per-round ratios, and the shade pass's ratio.
+// ratio, the median and range of the per-round ratios, and the shade pass's ratio; then, at the
+// largest light, every variant in turn against the first (the study's PCSS-16): issue 10's
+// "VSSM shade ≤ 2× PCSS-16" from the same minutes.
 //
 // Usage: light_bench [sweep.json] [rounds] [variant-substring]
 //   defaults: bench/sweeps/light_size_study.json, 15 rounds after the sweep's warm-ups, every
@@ -142,6 +144,32 @@ int main(int argc, char** argv) try {
                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
     }
     fmt::print("\n");
+
+    // At the largest light, every variant in turn, against the first (the study's PCSS-16): the
+    // shade and frame ratios of issue 10 from the same minutes, as the light ratio above.
+    std::vector<const Compiled*> fit;
+    for (const Compiled& v : variants)
+      if (int(map) <= v.mapSize) fit.push_back(&v);
+    if (fit.size() < 2) continue;
+    std::vector<rt::RunInputs> inputs;
+    for (const Compiled* v : fit) inputs.push_back(rt::sceneInputs(v->passes, *large));
+    std::vector<rt::TimedRun> runs;
+    for (size_t i = 0; i < fit.size(); ++i) runs.push_back({&fit[i]->passes, &inputs[i]});
+    const std::vector<rt::TimingResult> t = rt::timeInterleaved(ctx, runs, spec.warmup, rounds);
+    fmt::print(
+        "At light {}, all {} variants in turn ({} rounds), against {}:\n\n| variant | frame ms | shade ms | frame ÷ "
+        "anchor (per-round median) | shade ÷ anchor (medians) |\n|---|---:|---:|---:|---:|\n",
+        largest->resolved.lightWidth, fit.size(), rounds, fit[0]->label);
+    for (size_t i = 0; i < fit.size(); ++i) {
+      std::vector<double> perRound;
+      for (int k = 0; k < rounds; ++k) perRound.push_back(t[i].runTotalsMs[k] / t[0].runTotalsMs[k]);
+      fmt::print("| {} | {:.1f} | {:.1f} | {:.2f} | {:.2f} |\n", fit[i]->label, t[i].totalMs, shadeMs(t[i]),
+                 rt::median(perRound), shadeMs(t[i]) / shadeMs(t[0]));
+    }
+    fmt::print("\n");
+    std::fflush(stdout);
+    fmt::print(stderr, "light_bench: every variant at light {} map {}: {:.0f} s\n", largest->resolved.lightWidth, map,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   fmt::print("{:.0f} s wall, load average {} at the end\n",
              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), loadAverage());
