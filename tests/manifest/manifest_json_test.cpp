@@ -73,5 +73,29 @@ TEST(ManifestJson, MissingFieldIsNamed) {
   }
 }
 
+// A number that does not fit the field is one clear error, never a cast out of range
+// (fuzz_manifest found a 49-digit "shift"; tests/fuzz/corpus/manifest/regression_shift_out_of_range.json).
+TEST(ManifestJson, ANumberThatDoesNotFitItsFieldIsOneClearError) {
+  nlohmann::json j = toJson(planned(test::pcfSpec()));
+  ASSERT_TRUE(j["images"][0]["size"].contains("shift"));
+  const std::pair<nlohmann::json, const char*> cases[] = {
+      {nlohmann::json(uint64_t(1) << 40), "'shift' is out of range"},
+      {nlohmann::json(-(int64_t(1) << 40)), "'shift' is out of range"},
+      {nlohmann::json(4.4e48), "'shift' has the wrong type"},  // a float where an integer belongs
+      {nlohmann::json(2.0), "'shift' has the wrong type"},
+  };
+  for (const auto& [bad, message] : cases) {
+    j["images"][0]["size"]["shift"] = bad;
+    try {
+      manifestFromJson(j);
+      FAIL() << bad.dump();
+    } catch (const ManifestError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << bad.dump() << ": " << e.what();
+    }
+  }
+  j["images"][0]["size"]["shift"] = 1;  // the sibling: an integer in range is read
+  EXPECT_NO_THROW(manifestFromJson(j));
+}
+
 }  // namespace
 }  // namespace shadowc
