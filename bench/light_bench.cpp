@@ -62,6 +62,13 @@ double shadeMs(const rt::TimingResult& t) {
   return ms;
 }
 
+// Round k's frame of `num` ÷ round k's frame of `den` (both from one rt::timeInterleaved call).
+std::vector<double> roundRatios(const rt::TimingResult& num, const rt::TimingResult& den) {
+  std::vector<double> r;
+  for (size_t k = 0; k < num.runTotalsMs.size(); ++k) r.push_back(num.runTotalsMs[k] / den.runTotalsMs[k]);
+  return r;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) try {
@@ -133,8 +140,7 @@ int main(int argc, char** argv) try {
       const rt::RunInputs inSmall = rt::sceneInputs(v.passes, *small), inLarge = rt::sceneInputs(v.passes, *large);
       const std::vector<rt::TimingResult> t =
           rt::timeInterleaved(ctx, {{&v.passes, &inSmall}, {&v.passes, &inLarge}}, spec.warmup, rounds);
-      std::vector<double> perRound;
-      for (int k = 0; k < rounds; ++k) perRound.push_back(t[1].runTotalsMs[k] / t[0].runTotalsMs[k]);
+      const std::vector<double> perRound = roundRatios(t[1], t[0]);
       const auto [lo, hi] = std::minmax_element(perRound.begin(), perRound.end());
       fmt::print("| {} | {:.1f} | {:.1f} | {:.2f} | {:.2f} [{:.2f}–{:.2f}] | {:.2f} |\n", v.label, t[0].totalMs,
                  t[1].totalMs, t[1].totalMs / t[0].totalMs, rt::median(perRound), *lo, *hi,
@@ -160,12 +166,9 @@ int main(int argc, char** argv) try {
         "At light {}, all {} variants in turn ({} rounds), against {}:\n\n| variant | frame ms | shade ms | frame ÷ "
         "anchor (per-round median) | shade ÷ anchor (medians) |\n|---|---:|---:|---:|---:|\n",
         largest->resolved.lightWidth, fit.size(), rounds, fit[0]->label);
-    for (size_t i = 0; i < fit.size(); ++i) {
-      std::vector<double> perRound;
-      for (int k = 0; k < rounds; ++k) perRound.push_back(t[i].runTotalsMs[k] / t[0].runTotalsMs[k]);
+    for (size_t i = 0; i < fit.size(); ++i)
       fmt::print("| {} | {:.1f} | {:.1f} | {:.2f} | {:.2f} |\n", fit[i]->label, t[i].totalMs, shadeMs(t[i]),
-                 rt::median(perRound), shadeMs(t[i]) / shadeMs(t[0]));
-    }
+                 rt::median(roundRatios(t[i], t[0])), shadeMs(t[i]) / shadeMs(t[0]));
     fmt::print("\n");
     std::fflush(stdout);
     fmt::print(stderr, "light_bench: every variant at light {} map {}: {:.0f} s\n", largest->resolved.lightWidth, map,

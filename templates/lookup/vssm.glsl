@@ -229,7 +229,6 @@ vec4 shadowc_walkMean(vec4 sum, float area) {
 }
 #endif
 
-
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if (den == 1) {  // no subdivision: the root is the one leaf (the same corners as the walk's)

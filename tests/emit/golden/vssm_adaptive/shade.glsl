@@ -454,7 +454,7 @@ vec4 shadowc_walkMean(vec4 sum, float area){
   return sum /(65536.0 * area);
 #line 229
 }
-#line 233
+#line 232
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -467,9 +467,9 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   int subs = den * den;
 
   const int piece = shadowc_satPiece;
-#line 247
+#line 246
   bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
-#line 253
+#line 252
   uint marksLo = 0u;
   uint marksHi = 0u;
 
@@ -489,7 +489,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 274
+#line 273
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -522,7 +522,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     if(grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1)== 1){
 
       shadowc_markSet(marksLo, marksHi, bit - 1, true);
-#line 309
+#line 308
     }
 
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
@@ -534,7 +534,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       } else if(nonPlanar){
 
         shadowc_markSet(marksLo, marksHi, grid ? bit : k, true);
-#line 323
+#line 322
       }
     }
     lo = lb;
@@ -553,24 +553,24 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     int j = b / den;
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }
-#line 348
+#line 347
 }
-#line 357
+#line 356
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 360
+#line 359
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 371
+#line 370
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 385
+#line 384
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -598,12 +598,12 @@ void shadowc_qtWalk(int height){
   }
 
 }
-#line 415
+#line 414
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 424
+#line 423
   shadowc_uniformWalk(5, 0 != 0);
-#line 429
+#line 428
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -620,12 +620,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 447
+#line 446
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 453
+#line 452
   shadowc_qtWalk(3);
-#line 460
+#line 459
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -639,20 +639,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 480
+#line 479
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 488
+#line 487
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 497
+#line 496
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"

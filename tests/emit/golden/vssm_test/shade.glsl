@@ -370,7 +370,7 @@ vec4 shadowc_walkMean(vec4 sum, float area){
   return sum /(65536.0 * area);
 #line 229
 }
-#line 233
+#line 232
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -381,10 +381,10 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
   int subs = den * den;
-#line 249
+#line 248
   const int piece = 1 << 30;
   const bool wideSubs = false;
-#line 256
+#line 255
   int k = - 1;
   int j = 0;
   int c = 0;
@@ -401,7 +401,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 274
+#line 273
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -432,7 +432,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     }
 
     if(grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1)== 1){
-#line 307
+#line 306
       shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 
     }
@@ -444,7 +444,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       if(k < 0){
         walk = nonPlanar;
       } else if(nonPlanar){
-#line 321
+#line 320
         shadowc_qtResolveLeaf(grid ? vec4(xa, y0, xb, y1): vec4(box));
 
       }
@@ -459,38 +459,38 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       acc = vec4(0.0);
     }
   }
-#line 348
+#line 347
 }
-#line 357
+#line 356
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 360
+#line 359
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 385
+#line 384
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
-#line 392
+#line 391
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 401
+#line 400
     if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
-#line 411
+#line 410
 }
-#line 415
+#line 414
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 424
+#line 423
   shadowc_uniformWalk(5, 0 != 0);
-#line 429
+#line 428
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -507,12 +507,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 447
+#line 446
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 453
+#line 452
   shadowc_qtWalk(3);
-#line 460
+#line 459
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -526,11 +526,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 491
+#line 490
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 497
+#line 496
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
