@@ -87,15 +87,16 @@ vec4 shadowc_qtBox(ivec3 node) {
 
 float shadowc_boxArea(vec4 box) { return (box.z - box.x) * (box.w - box.y); }
 
-// Algorithm 2 L9-L19 for one sub-kernel of `area` texels (> 0) with mean moments m:
-// 0 = accepted (lit or normal), 1 = non-planar.
-int shadowc_qtAccept(vec4 m, float area) {
+// Algorithm 2 L9-L19 for one sub-kernel of `area` texels (> 0) with mean moments m: 0 = accepted
+// (lit, or normal when `acceptNormal`), 1 = not (non-planar; or normal, which the uniform walk's
+// `always` root does not accept: it walks unless the root is fully lit).
+int shadowc_classify(vec4 m, float area, bool acceptNormal) {
   float variance = m.y - m.x * m.x;
   if (m.x >= shadowc_vD && variance < SHADOWC_LIT_THRESHOLD) {
     shadowc_aLitArea += area;
     return 0;
   }
-  if (m.x < shadowc_vD) {
+  if (acceptNormal && m.x < shadowc_vD) {
     shadowc_aEx += m.x * area;
     shadowc_aEx2 += m.y * area;
     shadowc_aVsmArea += area;
@@ -103,6 +104,9 @@ int shadowc_qtAccept(vec4 m, float area) {
   }
   return 1;
 }
+
+// Lit or normal accepted, 1 = non-planar.
+int shadowc_qtAccept(vec4 m, float area) { return shadowc_classify(m, area, true); }
 
 // Algorithm 2 L6-L19 for one sub-kernel box: 0 = accepted (lit or normal, or empty), 1 = non-planar.
 int shadowc_qtClassifyBox(vec4 box) {
@@ -168,27 +172,17 @@ int shadowc_markPop(inout uint lo, inout uint hi) {
 bool shadowc_qtVisit(ivec3 node) { return shadowc_qtClassifyBox(shadowc_qtBox(node)) == 1; }
 void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
 
-// Algorithm 2 L9-L11 at the root, sec. 5.2's "reasonable acceleration strategy": a region whose
-// mean lies behind d with a variance under the Threshold is fully lit, and none of its
-// sub-kernels is read (4 SAT reads instead of the whole walk for most lit receivers; the
-// quadtree walk does the same at its root). True when it accepted the root as lit.
-bool shadowc_rootLit(vec4 m, float area) {
-  if (!(area > 0.0)) return false;
-  if (!(m.x >= shadowc_vD && m.y - m.x * m.x < SHADOWC_LIT_THRESHOLD)) return false;
-  shadowc_aLitArea += area;
-  return true;
-}
-
 // Whether the root box (mean moments m over `area` texels) needs the den x den walk: `always`
-// walks unless the root is fully lit; `nonPlanarOnly` (Algorithm 1 L11-L15 / L17-L20) only when it
-// is non-planar, and otherwise accepts it as one lit or normal box.
+// walks unless the root is fully lit (Algorithm 2 L9-L11 at the root, sec. 5.2's "reasonable
+// acceleration strategy": 4 SAT reads instead of the whole walk for most lit receivers; the
+// quadtree walk does the same at its root); `nonPlanarOnly` (Algorithm 1 L11-L15 / L17-L20) only
+// when it is non-planar, and otherwise accepts it as one lit or normal box. An empty root needs nothing.
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
-  if (nonPlanarOnly) return area > 0.0 && shadowc_qtAccept(m, area) == 1;
-  return !shadowc_rootLit(m, area);
+  return area > 0.0 && shadowc_classify(m, area, nonPlanarOnly) == 1;
 }
 
 // Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision. With `always` a fully lit
-// root is accepted first (shadowc_rootLit). `nonPlanarOnly`:
+// root is accepted first (shadowc_rootNeedsWalk). `nonPlanarOnly`:
 // Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
 // the den x den walk only when it is non-planar (classify accumulates nothing then).
 // What lavapipe charges (issue 10, docs/performance.md "One loop for the whole uniform walk"): an
@@ -219,12 +213,22 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 #endif
 
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
-// A box sum accumulated in float (pieces of a wide box) as mean moments over `area` texels.
-vec4 shadowc_walkMean(vec4 sum, float area) {
+// The walk keeps the two moments VSSM reads (E(x), E(x^2)) of each corner and sum, not the SAT's
+// four channels: every value the loop carries from step to step is state each step loads, masks
+// and stores again on lavapipe, per channel.
 #if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
-  return sum / (65536.0 * area);
+#define shadowc_WalkSum uvec2
 #else
-  return shadowc_satMeanOfSum(sum, area);
+#define shadowc_WalkSum vec2
+#endif
+
+// A box sum (one cell, or pieces of a wide box added in float) as mean moments over `area`
+// texels: per channel the same arithmetic as shadowc_satMeanOfSum.
+vec4 shadowc_walkMean(vec2 sum, float area) {
+#if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
+  return vec4(sum / (65536.0 * area), 0.0, 0.0);
+#else
+  return shadowc_satMeanOfSum(vec4(sum, 0.0, 0.0), area);
 #endif
 }
 #endif
@@ -255,9 +259,9 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   int k = -1;              // box bands: the box (-1 the root, else sub-kernel k); k = subs: grid
   int j = 0;               // band
   int c = 0;               // the step reads columns c and c + 1
-  vec4 acc = vec4(0.0);    // the box's sum so far (box bands)
-  shadowc_SatSum lo = shadowc_SatSum(0);  // the carried column's top and bottom corners, and its x
-  shadowc_SatSum hi = shadowc_SatSum(0);
+  vec2 acc = vec2(0.0);    // the box's sum so far (box bands)
+  shadowc_WalkSum lo = shadowc_WalkSum(0);  // the carried column's top and bottom corners, and its x
+  shadowc_WalkSum hi = shadowc_WalkSum(0);
   int xc = 0;
   bool walk = false;
   bool more = true;
@@ -276,20 +280,20 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     int y1 = grid ? root.y + ((j + 1) * size.y) / den : min(box.y + (j + 1) * piece, box.w);
     int xa = grid ? root.x + (c * size.x) / den : min(box.x + c * piece, box.z);
     int xb = grid ? root.x + (cb * size.x) / den : min(box.x + cb * piece, box.z);
-    shadowc_SatSum la = shadowc_summedCorner(xa - 1, y0 - 1, 0);
-    shadowc_SatSum ha = shadowc_summedCorner(xa - 1, y1 - 1, 0);
-    shadowc_SatSum lb = shadowc_summedCorner(xb - 1, y0 - 1, 0);
-    shadowc_SatSum hb = shadowc_summedCorner(xb - 1, y1 - 1, 0);
-    shadowc_SatSum s1 = ha - hi - la + lo;  // cell (carried column, a)
-    shadowc_SatSum s2 = hb - ha - lb + la;  // cell (a, b)
+    shadowc_WalkSum la = shadowc_summedCorner(xa - 1, y0 - 1, 0).xy;
+    shadowc_WalkSum ha = shadowc_summedCorner(xa - 1, y1 - 1, 0).xy;
+    shadowc_WalkSum lb = shadowc_summedCorner(xb - 1, y0 - 1, 0).xy;
+    shadowc_WalkSum hb = shadowc_summedCorner(xb - 1, y1 - 1, 0).xy;
+    shadowc_WalkSum s1 = ha - hi - la + lo;  // cell (carried column, a)
+    shadowc_WalkSum s2 = hb - ha - lb + la;  // cell (a, b)
     bool cell1 = c > 0 && xa > xc && y1 > y0;
     bool cell2 = cb > c && xb > xa && y1 > y0;
     float area1 = float((xa - xc) * (y1 - y0));
     float area2 = float((xb - xa) * (y1 - y0));
     // Box bands add their cells in shadowc_summedSum's order (adding 0.0 changes no sum).
     if (!grid) {
-      acc += cell1 ? vec4(s1) : vec4(0.0);
-      acc += cell2 ? vec4(s2) : vec4(0.0);
+      acc += cell1 ? vec2(s1) : vec2(0.0);
+      acc += cell2 ? vec2(s2) : vec2(0.0);
     }
     int bit = j * den + c;  // grid: sub-kernel (c, j)
     c += 2;
@@ -299,7 +303,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       ++j;
     }
     // Slot 1 (c, j as the step read them, before the advance above): grid sub-kernel (c - 1, j).
-    if (grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1) == 1) {
+    if (grid && cell1 && shadowc_qtAccept(shadowc_walkMean(vec2(s1), area1), area1) == 1) {
 #if SHADOWC_WALK_DEFER
       shadowc_markSet(marksLo, marksHi, bit - 1, true);
 #else
@@ -309,8 +313,10 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     // Slot 2: grid sub-kernel (c, j) likewise, or a box whose last piece this step read.
     float area = grid ? area2 : float((box.z - box.x) * (box.w - box.y));
     if (grid ? cell2 : bandEnd && j >= cells.y && area > 0.0) {
-      vec4 m = shadowc_walkMean(grid ? vec4(s2) : acc, area);  // = shadowc_satMeanOfSum(s2, area2) on grid
-      bool nonPlanar = k < 0 ? shadowc_rootNeedsWalk(m, area, nonPlanarOnly) : shadowc_qtAccept(m, area) == 1;
+      vec4 m = shadowc_walkMean(grid ? vec2(s2) : acc, area);
+      // The root (k < 0) as shadowc_rootNeedsWalk (area > 0 here), a sub-kernel as shadowc_qtAccept:
+      // one classification either way (a ternary of two calls runs both bodies, masked).
+      bool nonPlanar = shadowc_classify(m, area, k >= 0 || nonPlanarOnly) == 1;
       if (k < 0) {
         walk = nonPlanar;  // the root: walk on only when it needs it
       } else if (nonPlanar) {
@@ -328,7 +334,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       more = k < 0 ? walk : k + 1 < subs;
       k = k < 0 && !wideSubs ? subs : k + 1;  // on to the grid, or to the next (wide) sub-kernel
       j = 0;
-      acc = vec4(0.0);
+      acc = vec2(0.0);
     }
   }
 #if SHADOWC_WALK_DEFER

@@ -370,14 +370,14 @@ vec4 shadowc_qtBox(ivec3 node){
 }
 
 float shadowc_boxArea(vec4 box){ return(box . z - box . x)*(box . w - box . y);}
-#line 92
-int shadowc_qtAccept(vec4 m, float area){
+#line 93
+int shadowc_classify(vec4 m, float area, bool acceptNormal){
   float variance = m . y - m . x * m . x;
   if(m . x >= shadowc_vD && variance < 0.0001){
     shadowc_aLitArea += area;
     return 0;
   }
-  if(m . x < shadowc_vD){
+  if(acceptNormal && m . x < shadowc_vD){
     shadowc_aEx += m . x * area;
     shadowc_aEx2 += m . y * area;
     shadowc_aVsmArea += area;
@@ -385,13 +385,15 @@ int shadowc_qtAccept(vec4 m, float area){
   }
   return 1;
 }
-#line 108
+#line 109
+int shadowc_qtAccept(vec4 m, float area){ return shadowc_classify(m, area, true);}
+#line 112
 int shadowc_qtClassifyBox(vec4 box){
   float area = shadowc_boxArea(box);
   if(!(area > 0.0))return 0;
   return shadowc_qtAccept(shadowc_boxMoments(box, 0), area);
 }
-#line 115
+#line 119
 void shadowc_qtResolveLeaf(vec4 box){
   float area = shadowc_boxArea(box);
 
@@ -401,7 +403,7 @@ void shadowc_qtResolveLeaf(vec4 box){
   float depthSum = 0.0;
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i){
-#line 127
+#line 131
       ivec2 t = ivec2(box . xy)+ ivec2(floor((vec2(i, j)+ 0.5)* size / float(n)));
 
       float z = shadowc_depthAt(t);
@@ -414,47 +416,39 @@ void shadowc_qtResolveLeaf(vec4 box){
   shadowc_aPcfArea += area;
   shadowc_aPcfOcc += occluded * scale;
   shadowc_aPcfDepth += depthSum * scale;
-#line 142
+#line 146
 }
-#line 145
+#line 149
 void shadowc_qtLeafBox(vec4 box){
   if(shadowc_qtClassifyBox(box)== 1)shadowc_qtResolveLeaf(box);
 }
-#line 152
+#line 156
 void shadowc_markSet(inout uint lo, inout uint hi, int b, bool on){
   uint m = on ? 1u <<(b & 31): 0u;
   lo |= b < 32 ? m : 0u;
   hi |= b >= 32 ? m : 0u;
 }
-#line 159
+#line 163
 int shadowc_markPop(inout uint lo, inout uint hi){
   int b = lo != 0u ? findLSB(lo): 32 + findLSB(hi);
   if(b < 32)lo &= lo - 1u;
   else hi &= hi - 1u;
   return b;
 }
-#line 168
+#line 172
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
-#line 175
-bool shadowc_rootLit(vec4 m, float area){
-  if(!(area > 0.0))return false;
-  if(!(m . x >= shadowc_vD && m . y - m . x * m . x < 0.0001))return false;
-  shadowc_aLitArea += area;
-  return true;
-}
-#line 185
+#line 180
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
-  if(nonPlanarOnly)return area > 0.0 && shadowc_qtAccept(m, area)== 1;
-  return ! shadowc_rootLit(m, area);
+  return area > 0.0 && shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 223
-vec4 shadowc_walkMean(vec4 sum, float area){
+#line 227
+vec4 shadowc_walkMean(vec2 sum, float area){
 
-  return sum /(65536.0 * area);
-#line 229
+  return vec4(sum /(65536.0 * area), 0.0, 0.0);
+#line 233
 }
-#line 232
+#line 236
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -467,18 +461,18 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   int subs = den * den;
 
   const int piece = shadowc_satPiece;
-#line 246
+#line 250
   bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
-#line 252
+#line 256
   uint marksLo = 0u;
   uint marksHi = 0u;
 
   int k = - 1;
   int j = 0;
   int c = 0;
-  vec4 acc = vec4(0.0);
-               uvec4 lo = uvec4(0);
-               uvec4 hi = uvec4(0);
+  vec2 acc = vec2(0.0);
+                uvec2 lo = uvec2(0);
+                uvec2 hi = uvec2(0);
   int xc = 0;
   bool walk = false;
   bool more = true;
@@ -489,27 +483,27 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 273
+#line 277
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
     int y1 = grid ? root . y +((j + 1)* size . y)/ den : min(box . y +(j + 1)* piece, box . w);
     int xa = grid ? root . x +(c * size . x)/ den : min(box . x + c * piece, box . z);
     int xb = grid ? root . x +(cb * size . x)/ den : min(box . x + cb * piece, box . z);
-                 uvec4 la = shadowc_summedCorner(xa - 1, y0 - 1, 0);
-                 uvec4 ha = shadowc_summedCorner(xa - 1, y1 - 1, 0);
-                 uvec4 lb = shadowc_summedCorner(xb - 1, y0 - 1, 0);
-                 uvec4 hb = shadowc_summedCorner(xb - 1, y1 - 1, 0);
-                 uvec4 s1 = ha - hi - la + lo;
-                 uvec4 s2 = hb - ha - lb + la;
+                  uvec2 la = shadowc_summedCorner(xa - 1, y0 - 1, 0). xy;
+                  uvec2 ha = shadowc_summedCorner(xa - 1, y1 - 1, 0). xy;
+                  uvec2 lb = shadowc_summedCorner(xb - 1, y0 - 1, 0). xy;
+                  uvec2 hb = shadowc_summedCorner(xb - 1, y1 - 1, 0). xy;
+                  uvec2 s1 = ha - hi - la + lo;
+                  uvec2 s2 = hb - ha - lb + la;
     bool cell1 = c > 0 && xa > xc && y1 > y0;
     bool cell2 = cb > c && xb > xa && y1 > y0;
     float area1 = float((xa - xc)*(y1 - y0));
     float area2 = float((xb - xa)*(y1 - y0));
 
     if(! grid){
-      acc += cell1 ? vec4(s1): vec4(0.0);
-      acc += cell2 ? vec4(s2): vec4(0.0);
+      acc += cell1 ? vec2(s1): vec2(0.0);
+      acc += cell2 ? vec2(s2): vec2(0.0);
     }
     int bit = j * den + c;
     c += 2;
@@ -519,22 +513,23 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       ++ j;
     }
 
-    if(grid && cell1 && shadowc_qtAccept(shadowc_satMeanOfSum(s1, area1), area1)== 1){
+    if(grid && cell1 && shadowc_qtAccept(shadowc_walkMean(vec2(s1), area1), area1)== 1){
 
       shadowc_markSet(marksLo, marksHi, bit - 1, true);
-#line 308
+#line 312
     }
 
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
     if(grid ? cell2 : bandEnd && j >= cells . y && area > 0.0){
-      vec4 m = shadowc_walkMean(grid ? vec4(s2): acc, area);
-      bool nonPlanar = k < 0 ? shadowc_rootNeedsWalk(m, area, nonPlanarOnly): shadowc_qtAccept(m, area)== 1;
+      vec4 m = shadowc_walkMean(grid ? vec2(s2): acc, area);
+#line 319
+      bool nonPlanar = shadowc_classify(m, area, k >= 0 || nonPlanarOnly)== 1;
       if(k < 0){
         walk = nonPlanar;
       } else if(nonPlanar){
 
         shadowc_markSet(marksLo, marksHi, grid ? bit : k, true);
-#line 322
+#line 328
       }
     }
     lo = lb;
@@ -544,7 +539,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       more = k < 0 ? walk : k + 1 < subs;
       k = k < 0 && ! wideSubs ? subs : k + 1;
       j = 0;
-      acc = vec4(0.0);
+      acc = vec2(0.0);
     }
   }
 
@@ -553,24 +548,24 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     int j = b / den;
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }
-#line 347
+#line 353
 }
-#line 356
+#line 362
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 359
+#line 365
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 370
+#line 376
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 384
+#line 390
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -598,12 +593,12 @@ void shadowc_qtWalk(int height){
   }
 
 }
-#line 414
+#line 420
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 423
+#line 429
   shadowc_uniformWalk(5, 0 != 0);
-#line 428
+#line 434
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -620,12 +615,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 446
+#line 452
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 452
+#line 458
   shadowc_qtWalk(3);
-#line 459
+#line 465
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -639,20 +634,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 479
+#line 485
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 487
+#line 493
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 496
+#line 502
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
