@@ -259,11 +259,12 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   int k = -1;              // box bands: the box (-1 the root, else sub-kernel k); k = subs: grid
   int j = 0;               // band
   int c = 0;               // the step reads columns c and c + 1
-  vec2 acc = vec2(0.0);    // the box's sum so far (box bands)
+#if SHADOWC_SAT_WIDE
+  vec2 acc = vec2(0.0);    // a wide box's sum so far (box bands; a box within one piece is one cell)
+#endif
   shadowc_WalkSum lo = shadowc_WalkSum(0);  // the carried column's top and bottom corners, and its x
   shadowc_WalkSum hi = shadowc_WalkSum(0);
   int xc = 0;
-  bool walk = false;
   bool more = true;
   const int limit = (1 + SHADOWC_UNIFORM_MAX_DEN * SHADOWC_UNIFORM_MAX_DEN) * SHADOWC_SAT_PIECES *
                         (SHADOWC_SAT_PIECES / 2 + 1) + SHADOWC_UNIFORM_MAX_DEN * (SHADOWC_UNIFORM_MAX_DEN / 2 + 1);
@@ -290,11 +291,13 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     bool cell2 = cb > c && xb > xa && y1 > y0;
     float area1 = float((xa - xc) * (y1 - y0));
     float area2 = float((xb - xa) * (y1 - y0));
+#if SHADOWC_SAT_WIDE
     // Box bands add their cells in shadowc_summedSum's order (adding 0.0 changes no sum).
     if (!grid) {
       acc += cell1 ? vec2(s1) : vec2(0.0);
       acc += cell2 ? vec2(s2) : vec2(0.0);
     }
+#endif
     int bit = j * den + c;  // grid: sub-kernel (c, j)
     c += 2;
     bool bandEnd = c >= ncol;
@@ -312,8 +315,13 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     }
     // Slot 2: grid sub-kernel (c, j) likewise, or a box whose last piece this step read.
     float area = grid ? area2 : float((box.z - box.x) * (box.w - box.y));
+    bool walk = false;  // the root's verdict, read below in the same step (its last band ends here)
     if (grid ? cell2 : bandEnd && j >= cells.y && area > 0.0) {
+#if SHADOWC_SAT_WIDE
       vec4 m = shadowc_walkMean(grid ? vec2(s2) : acc, area);
+#else
+      vec4 m = shadowc_walkMean(vec2(s2), area);  // a box within one piece: this step's cell (a, b)
+#endif
       // The root (k < 0) as shadowc_rootNeedsWalk (area > 0 here), a sub-kernel as shadowc_qtAccept:
       // one classification either way (a ternary of two calls runs both bodies, masked).
       bool nonPlanar = shadowc_classify(m, area, k >= 0 || nonPlanarOnly) == 1;
@@ -334,7 +342,9 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       more = k < 0 ? walk : k + 1 < subs;
       k = k < 0 && !wideSubs ? subs : k + 1;  // on to the grid, or to the next (wide) sub-kernel
       j = 0;
+#if SHADOWC_SAT_WIDE
       acc = vec2(0.0);
+#endif
     }
   }
 #if SHADOWC_WALK_DEFER

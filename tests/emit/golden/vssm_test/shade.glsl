@@ -382,11 +382,10 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   int k = - 1;
   int j = 0;
   int c = 0;
-  vec2 acc = vec2(0.0);
+#line 265
                 uvec2 lo = uvec2(0);
                 uvec2 hi = uvec2(0);
   int xc = 0;
-  bool walk = false;
   bool more = true;
   const int limit =(1 + 5 * 5)* 1 *
                         (1 / 2 + 1)+ 5 *(5 / 2 + 1);
@@ -395,7 +394,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 277
+#line 278
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -412,11 +411,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     bool cell2 = cb > c && xb > xa && y1 > y0;
     float area1 = float((xa - xc)*(y1 - y0));
     float area2 = float((xb - xa)*(y1 - y0));
-
-    if(! grid){
-      acc += cell1 ? vec2(s1): vec2(0.0);
-      acc += cell2 ? vec2(s2): vec2(0.0);
-    }
+#line 301
     int bit = j * den + c;
     c += 2;
     bool bandEnd = c >= ncol;
@@ -426,20 +421,22 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     }
 
     if(grid && cell1 && shadowc_qtAccept(shadowc_walkMean(vec2(s1), area1), area1)== 1){
-#line 310
+#line 313
       shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 
     }
 
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
+    bool walk = false;
     if(grid ? cell2 : bandEnd && j >= cells . y && area > 0.0){
-      vec4 m = shadowc_walkMean(grid ? vec2(s2): acc, area);
-#line 319
+#line 323
+      vec4 m = shadowc_walkMean(vec2(s2), area);
+#line 327
       bool nonPlanar = shadowc_classify(m, area, k >= 0 || nonPlanarOnly)== 1;
       if(k < 0){
         walk = nonPlanar;
       } else if(nonPlanar){
-#line 326
+#line 334
         shadowc_qtResolveLeaf(grid ? vec4(xa, y0, xb, y1): vec4(box));
 
       }
@@ -451,41 +448,41 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       more = k < 0 ? walk : k + 1 < subs;
       k = k < 0 && ! wideSubs ? subs : k + 1;
       j = 0;
-      acc = vec2(0.0);
+#line 348
     }
   }
-#line 353
+#line 363
 }
-#line 362
+#line 372
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 365
+#line 375
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 390
+#line 400
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
-#line 397
+#line 407
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 406
+#line 416
     if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
-#line 416
+#line 426
 }
-#line 420
+#line 430
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 429
+#line 439
   shadowc_uniformWalk(5, 0 != 0);
-#line 434
+#line 444
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -502,12 +499,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 452
+#line 462
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 458
+#line 468
   shadowc_qtWalk(3);
-#line 465
+#line 475
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -521,11 +518,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 496
+#line 506
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 502
+#line 512
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
