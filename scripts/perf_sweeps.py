@@ -149,7 +149,9 @@ def study_section(res, seconds):
             "Frame = median GPU frame total. Variants: `pcss[search, taps]` = samples/filters/pcss_poisson.shadow "
             "with `max: 255`; `vssm_fallback[sub]` = vssm_pcf_fallback.shadow (quadtree H = 2, PCF 2×2) with its "
             "5×5 blocker subdivided `always` or only where `nonplanar`; `vssm_mixed[sub]` = m = 5 / H = 3; "
-            "`vssm_h3` = H = 3 for both; `pcf16`, `vsm` the plain baselines. Under load single frame times move "
+            "`vssm_h3` = H = 3 for both; `eo` = `early_out none` or `minmax` (the min-max HSM of Algorithm 1 "
+            "L4 and L8-L10: lit and umbra receivers return before the blocker search); `pcf16`, `vsm` the plain "
+            "baselines. Under load single frame times move "
             "by ±30 %: read ratios.").format(
                took, len(rows), res["stats"]["ran"], res["stats"]["cached"],
                datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M"), r0["device"], os.cpu_count(), load_average(),
@@ -197,6 +199,15 @@ def study_section(res, seconds):
                              "{:.2f}× that frame)").format(best["variant"], best["metrics"]["rmse"], best["total_ms"],
                                                            c["total_ms"], c["total_ms"] / best["total_ms"])
             out.append(line)
+        # The paper's mixed scheme against H = 3 alone (sec. 6.3, Fig. 6: 117 against 94 fps), same early out.
+        for v in variants:
+            if not v.startswith("vssm_mixed[sub=nonplanar"):
+                continue
+            h3 = "vssm_h3[" + v[v.index("eo="):] if "eo=" in v else "vssm_h3"
+            c, d = cell.get((v, big, m)), cell.get((h3, big, m))
+            if c and d:
+                out.append("- {}² map, {} frame ÷ {} frame {:.2f} (shade {:.2f})".format(
+                    m, v, h3, c["total_ms"] / d["total_ms"], shade(c) / shade(d)))
     return "\n".join(out) + "\n"
 
 
@@ -214,14 +225,15 @@ def study_plot(res):
               "set output '{}.tmp'".format(target), "set multiplot layout 1,{}".format(len(maps)),
               "set grid lc rgb '#dddddd'", "set logscale x", "set xlabel 'light width (world units, log scale)'",
               "set ylabel 'frame time, median (ms)'", "set key below font ',9' maxrows 3", "set yrange [0:*]"]
-    colors = ["#7b3294", "#c2a5cf", "#0571b0", "#92c5de", "#e66101", "#fdb863", "#d7191c", "#1a9641", "#404040"]
+    colors = ["#7b3294", "#c2a5cf", "#0571b0", "#92c5de", "#e66101", "#fdb863", "#d7191c", "#1a9641", "#404040",
+              "#a6611a", "#018571", "#80cdc1", "#dfc27d", "#f1b6da", "#4dac26"]
     for m in maps:
         plots = []
         for v in variants:
             pts = sorted((width(r["scene"]), r["total_ms"]) for r in rows if r["variant"] == v and r["map"] == m)
             data = "\n".join("{} {:.3f}".format(x, y) for x, y in pts)
-            plots.append(("'-' using 1:2 with linespoints pt 7 ps 0.8 lw 2 lc rgb '{}' title '{}'".format(
-                colors[len(plots) % len(colors)], v), data))
+            plots.append(("'-' using 1:2 with linespoints pt 7 ps 0.8 lw 2 dt {} lc rgb '{}' title '{}'".format(
+                2 if "eo=minmax" in v else 1, colors[len(plots) % len(colors)], v), data))  # dashed: the HSM early out
         script.append("set title '{}² map, 1024² screen, two_planes' noenhanced".format(m))
         script.append("plot " + ", ".join(p for p, _ in plots))
         for _, data in plots:
