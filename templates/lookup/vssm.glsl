@@ -106,7 +106,7 @@ int shadowc_classify(vec4 m, float area, bool acceptNormal) {
   return lit || normal ? 0 : 1;
 }
 
-// Lit or normal accepted, 1 = non-planar.
+// 0 = lit or normal (accepted), 1 = non-planar.
 int shadowc_qtAccept(vec4 m, float area) { return shadowc_classify(m, area, true); }
 
 // Algorithm 2 L6-L19 for one sub-kernel box: 0 = accepted (lit or normal, or empty), 1 = non-planar.
