@@ -87,23 +87,25 @@ vec4 shadowc_qtBox(ivec3 node) {
 
 float shadowc_boxArea(vec4 box) { return (box.z - box.x) * (box.w - box.y); }
 
-// Algorithm 2 L9-L19 for one sub-kernel of `area` texels (> 0) with mean moments m: 0 = accepted
-// (lit, or normal when `acceptNormal`), 1 = not (non-planar; or normal, which the uniform walk's
-// `always` root does not accept: it walks unless the root is fully lit).
+// Algorithm 2 L9-L19 for one sub-kernel of `area` texels with mean moments m: 0 = accepted (lit,
+// or normal when `acceptNormal`) or not there (area <= 0: an empty box, or a walk slot without a
+// cell; it adds nothing, x + 0.0 being x, whatever m holds), 1 = not accepted (non-planar; or
+// normal, which the uniform walk's `always` root does not accept: it walks unless the root is
+// fully lit).
 // Without a branch: lavapipe runs both sides of a branch masked anyway, and a function with early
 // returns costs a return flag and a masked store per exit (callgrind, mixed scheme with the HSM
-// on two_planes light 4: 1430 M JIT instructions with the two returns, 1388 M without). With
-// area = 0 it adds nothing (x + 0.0 is x), so a caller may classify a cell that is not there
-// (shadowc_qtClassifyBox, the uniform walk's slots) and drop the verdict.
+// on two_planes light 4: 1430 M JIT instructions with the two returns, 1388 M without), so the
+// callers classify unconditionally and an absent cell is area 0, not a branch around the call.
 int shadowc_classify(vec4 m, float area, bool acceptNormal) {
+  bool there = area > 0.0;
   float variance = m.y - m.x * m.x;
-  bool lit = m.x >= shadowc_vD && variance < SHADOWC_LIT_THRESHOLD;
-  bool normal = acceptNormal && !lit && m.x < shadowc_vD;
+  bool lit = there && m.x >= shadowc_vD && variance < SHADOWC_LIT_THRESHOLD;
+  bool normal = there && acceptNormal && !lit && m.x < shadowc_vD;
   shadowc_aLitArea += lit ? area : 0.0;
   shadowc_aEx += normal ? m.x * area : 0.0;
   shadowc_aEx2 += normal ? m.y * area : 0.0;
   shadowc_aVsmArea += normal ? area : 0.0;
-  return lit || normal ? 0 : 1;
+  return there && !lit && !normal ? 1 : 0;
 }
 
 // 0 = lit or normal (accepted), 1 = non-planar.
@@ -111,10 +113,7 @@ int shadowc_qtAccept(vec4 m, float area) { return shadowc_classify(m, area, true
 
 // Algorithm 2 L6-L19 for one sub-kernel box: 0 = accepted (lit or normal, or empty), 1 = non-planar.
 int shadowc_qtClassifyBox(vec4 box) {
-  float area = shadowc_boxArea(box);
-  bool on = area > 0.0;
-  int r = shadowc_qtAccept(shadowc_boxMoments(box, 0), on ? area : 0.0);
-  return on ? r : 0;
+  return shadowc_qtAccept(shadowc_boxMoments(box, 0), shadowc_boxArea(box));
 }
 
 // A non-planar leaf (Algorithm 2 L22-L26); `box` is the one its classification read (area > 0).
@@ -180,8 +179,7 @@ void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
 // quadtree walk does the same at its root); `nonPlanarOnly` (Algorithm 1 L11-L15 / L17-L20) only
 // when it is non-planar, and otherwise accepts it as one lit or normal box. An empty root needs nothing.
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
-  int r = shadowc_classify(m, area > 0.0 ? area : 0.0, nonPlanarOnly);
-  return area > 0.0 && r == 1;
+  return shadowc_classify(m, area, nonPlanarOnly) == 1;
 }
 
 // Uniform den x den subdivision (sec. 5.2); den = 1 is no subdivision. With `always` a fully lit
@@ -308,13 +306,11 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       c = 0;
       ++j;
     }
-    // Both slots classify whether their cell is there or not (area 0 adds nothing, and the mean
-    // divides by at least 1, so nothing in it is NaN), and keep the verdict only where it is: no
-    // branch around a call (shadowc_classify).
+    // Both slots classify whether their cell is there or not (area 0 where it is not: nothing
+    // added, verdict 0; the mean divides by at least 1): no branch around a call (shadowc_classify).
     // Slot 1 (c, j as the step read them, before the advance above): grid sub-kernel (c - 1, j).
     bool on1 = grid && cell1;
-    int r1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true);
-    bool nonPlanar1 = on1 && r1 == 1;  // the call above, not inside the && (no branch)
+    bool nonPlanar1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true) == 1;
 #if SHADOWC_WALK_DEFER
     shadowc_markSet(marksLo, marksHi, bit - 1, nonPlanar1);
 #else
@@ -330,9 +326,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
 #endif
     // The root (k < 0) as shadowc_rootNeedsWalk (area > 0 where on2), a sub-kernel as
     // shadowc_qtAccept: one classification either way.
-    int r2 = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly);
-    bool nonPlanar = on2 && r2 == 1;
-    bool walk = k < 0 && nonPlanar;  // the root's verdict, read below in the same step (its last band ends here)
+    bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly) == 1;
 #if SHADOWC_WALK_DEFER
     shadowc_markSet(marksLo, marksHi, grid ? bit : k, k >= 0 && nonPlanar);
 #else
@@ -342,7 +336,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     hi = hb;
     xc = xb;
     if (bandEnd && j >= (grid ? den : cells.y)) {  // the last band of a box or of the grid
-      more = k < 0 ? walk : k + 1 < subs;
+      more = k < 0 ? nonPlanar : k + 1 < subs;  // the root walks on only when it needs it (its last band is this step)
       k = k < 0 && !wideSubs ? subs : k + 1;  // on to the grid, or to the next (wide) sub-kernel
       j = 0;
 #if SHADOWC_SAT_WIDE

@@ -317,52 +317,49 @@ vec4 shadowc_qtBox(ivec3 node){
 }
 
 float shadowc_boxArea(vec4 box){ return(box . z - box . x)*(box . w - box . y);}
-#line 98
+#line 99
 int shadowc_classify(vec4 m, float area, bool acceptNormal){
+  bool there = area > 0.0;
   float variance = m . y - m . x * m . x;
-  bool lit = m . x >= shadowc_vD && variance < 0.0001;
-  bool normal = acceptNormal && ! lit && m . x < shadowc_vD;
+  bool lit = there && m . x >= shadowc_vD && variance < 0.0001;
+  bool normal = there && acceptNormal && ! lit && m . x < shadowc_vD;
   shadowc_aLitArea += lit ? area : 0.0;
   shadowc_aEx += normal ? m . x * area : 0.0;
   shadowc_aEx2 += normal ? m . y * area : 0.0;
   shadowc_aVsmArea += normal ? area : 0.0;
-  return lit || normal ? 0 : 1;
+  return there && ! lit && ! normal ? 1 : 0;
 }
-#line 110
+#line 112
 int shadowc_qtAccept(vec4 m, float area){ return shadowc_classify(m, area, true);}
-#line 113
+#line 115
 int shadowc_qtClassifyBox(vec4 box){
-  float area = shadowc_boxArea(box);
-  bool on = area > 0.0;
-  int r = shadowc_qtAccept(shadowc_boxMoments(box, 0), on ? area : 0.0);
-  return on ? r : 0;
+  return shadowc_qtAccept(shadowc_boxMoments(box, 0), shadowc_boxArea(box));
 }
-#line 121
+#line 120
 void shadowc_qtResolveLeaf(vec4 box){
   float area = shadowc_boxArea(box);
-#line 146
+#line 145
   shadowc_aLitArea += area;
 
 }
-#line 151
+#line 150
 void shadowc_qtLeafBox(vec4 box){
   if(shadowc_qtClassifyBox(box)== 1)shadowc_qtResolveLeaf(box);
 }
-#line 174
+#line 173
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
-#line 182
+#line 181
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
-  int r = shadowc_classify(m, area > 0.0 ? area : 0.0, nonPlanarOnly);
-  return area > 0.0 && r == 1;
+  return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 230
+#line 228
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 236
+#line 234
 }
-#line 239
+#line 237
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -373,14 +370,14 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
   int subs = den * den;
-#line 255
+#line 253
   const int piece = 1 << 30;
   const bool wideSubs = false;
-#line 262
+#line 260
   int k = - 1;
   int j = 0;
   int c = 0;
-#line 268
+#line 266
                 uvec2 lo = uvec2(0);
                 uvec2 hi = uvec2(0);
   int xc = 0;
@@ -392,7 +389,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 281
+#line 279
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -409,7 +406,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     bool cell2 = cb > c && xb > xa && y1 > y0;
     float area1 = float((xa - xc)*(y1 - y0));
     float area2 = float((xb - xa)*(y1 - y0));
-#line 304
+#line 302
     int bit = j * den + c;
     c += 2;
     bool bandEnd = c >= ncol;
@@ -417,66 +414,63 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       c = 0;
       ++ j;
     }
-#line 315
+#line 312
     bool on1 = grid && cell1;
-    int r1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true);
-    bool nonPlanar1 = on1 && r1 == 1;
-#line 321
+    bool nonPlanar1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true)== 1;
+#line 317
     if(nonPlanar1)shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
-#line 324
+#line 320
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
     bool on2 = grid ? cell2 : bandEnd && j >= cells . y && area > 0.0;
-#line 329
+#line 325
     vec4 m = shadowc_walkMean(vec2(s2), max(area, 1.0));
+#line 329
+    bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly)== 1;
 #line 333
-    int r2 = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly);
-    bool nonPlanar = on2 && r2 == 1;
-    bool walk = k < 0 && nonPlanar;
-#line 339
     if(k >= 0 && nonPlanar)shadowc_qtResolveLeaf(grid ? vec4(xa, y0, xb, y1): vec4(box));
 
     lo = lb;
     hi = hb;
     xc = xb;
     if(bandEnd && j >=(grid ? den : cells . y)){
-      more = k < 0 ? walk : k + 1 < subs;
+      more = k < 0 ? nonPlanar : k + 1 < subs;
       k = k < 0 && ! wideSubs ? subs : k + 1;
       j = 0;
-#line 351
+#line 345
     }
   }
-#line 366
+#line 360
 }
-#line 375
+#line 369
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 378
+#line 372
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 403
+#line 397
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
-#line 410
+#line 404
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 419
+#line 413
     if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
-#line 429
+#line 423
 }
-#line 433
+#line 427
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 442
+#line 436
   shadowc_uniformWalk(5, 0 != 0);
-#line 447
+#line 441
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -493,12 +487,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 465
+#line 459
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 471
+#line 465
   shadowc_qtWalk(3);
-#line 478
+#line 472
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -512,11 +506,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 509
+#line 503
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 515
+#line 509
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
