@@ -191,15 +191,17 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 // lanes decide (gallivm pushes an execution mask for an `if` and tests for live lanes only at a
 // loop's end); only further iterations are skipped once no lane is left. So the whole walk is ONE
 // loop whose step 0 is the root box, which every lane needs, and whose later steps only walking
-// lanes take (a second loop for the sub-kernels cost every group one masked row: H = 3 alone was
-// faster than the mixed scheme on planar scenes). Each step reads the two corners of two columns
-// of a band (4 texel reads) and sums the two cells left of them, the first against the column
-// carried from the step before:
-// - "box" bands sum the cells into one box: the root (and, for a root wider than den SAT pieces,
-//   each sub-kernel in turn), cut into pieces of at most 255 texels when the int32 SAT is wide
-//   (sat.glsl, summed in the same order as shadowc_summedSum); a box within one piece is one step;
-// - "grid" bands are the rows of the den x den sub-kernels (columns at the sub-kernel edges), each
-//   cell classified as it is read: den = 5 reads 60 corners in 15 steps (100 as separate boxes).
+// lanes take (a second loop for the sub-kernels cost every group one masked row). What a group
+// that does not walk pays is therefore one step, whatever the step holds, and what a walking group
+// pays is the steps times that: each step reads ONE column of a band (its two corners, 2 texel
+// reads) and classifies the ONE cell between it and the column carried from the step before. The
+// root's first column is read before the loop, so step 0 is the root (4 reads, one
+// classification: what the quadtree walk's first step costs), and the grid takes den + 1 steps a
+// band (its first column has no cell left of it): den = 5 reads 60 corners in 30 steps (100 as
+// separate boxes). A step with two cells (two columns, 15 steps for den = 5) cost every group that
+// does not walk a second classification: the mixed scheme was 4 % behind H = 3 alone on planar
+// scenes with the min-max early out, where no group walks (callgrind, docs/performance.md
+// "One column per step").
 // Every sum is the same four corners in the same order as sat.glsl's, so each box mean is
 // bit-identical to a separate box query. Non-planar sub-kernels are marked in a bit mask and get
 // their PCF in one loop over the set bits after the walk, in the walk's order (their sums are their
@@ -207,6 +209,10 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 // needs, plus one masked PCF, instead of a masked PCF per step. With den^2 > 64 (and generic
 // shaders) a leaf's PCF is done in place. (A mask *array* gave wrong images in the stability
 // suite; not isolated between glslang, spirv-opt and lavapipe: masks are scalars.)
+// A wide int32 SAT (SHADOWC_SAT_WIDE: boxes cut into pieces of at most 255 texels, sat.glsl) has
+// its own walk: "box" bands sum the root (and, for a root wider than den pieces, each sub-kernel
+// in turn) piece by piece in shadowc_summedSum's order, "grid" bands classify the sub-kernels, two
+// columns a step (a box within one piece is one step).
 #if SHADOWC_FALLBACK_PCF && SHADOWC_UNIFORM_MAX_DEN * SHADOWC_UNIFORM_MAX_DEN <= 64
 #define SHADOWC_WALK_DEFER 1  // two mask words hold every sub-kernel
 #else
@@ -240,19 +246,62 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     shadowc_qtLeafBox(whole);
     return;
   }
-#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL
+#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL && !SHADOWC_SAT_WIDE
+  ivec2 root = ivec2(shadowc_vRoot.xy);
+  ivec2 size = ivec2(shadowc_vRoot.zw) - root;
+#if SHADOWC_WALK_DEFER
+  uint marksLo = 0u;  // bit k = j * den + i (k - 32 in marksHi): sub-kernel (i, j) is non-planar
+  uint marksHi = 0u;
+#endif
+  // The carried column: its top and bottom corners in the band, and its x (texel edge).
+  shadowc_WalkSum lo = shadowc_summedCorner(root.x - 1, root.y - 1, 0).xy;
+  shadowc_WalkSum hi = shadowc_summedCorner(root.x - 1, root.y + size.y - 1, 0).xy;
+  int xc = root.x;
+  bool more = true;
+  for (int step = 0; step < 1 + den * (den + 1) && more; ++step) {
+    // Step 0: the root's right column. Step 1 + j * (den + 1) + c: column c of grid band j.
+    bool grid = step > 0;
+    int g = step - 1;
+    int j = g / (den + 1);
+    int c = g - j * (den + 1);
+    int y0 = grid ? root.y + (j * size.y) / den : root.y;
+    int y1 = grid ? root.y + ((j + 1) * size.y) / den : root.y + size.y;
+    int xa = grid ? root.x + (c * size.x) / den : root.x + size.x;
+    shadowc_WalkSum la = shadowc_summedCorner(xa - 1, y0 - 1, 0).xy;
+    shadowc_WalkSum ha = shadowc_summedCorner(xa - 1, y1 - 1, 0).xy;
+    shadowc_WalkSum sum = ha - hi - la + lo;  // the cell (carried column, this one)
+    // The cell is there unless this is a band's first column or it is empty (area 0: nothing
+    // added, verdict 0; shadowc_classify). The root as shadowc_rootNeedsWalk, a sub-kernel as
+    // shadowc_qtAccept.
+    float area = float((xa - xc) * (y1 - y0));
+    bool cell = (!grid || c > 0) && xa > xc && y1 > y0;
+    bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(area, 1.0)), cell ? area : 0.0,
+                                      grid || nonPlanarOnly) == 1;
+#if SHADOWC_WALK_DEFER
+    shadowc_markSet(marksLo, marksHi, g - j - 1, grid && nonPlanar);  // sub-kernel (c - 1, j)
+#else
+    if (grid && nonPlanar) shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
+#endif
+    lo = la;
+    hi = ha;
+    xc = xa;
+    more = grid || nonPlanar;  // the root walks on only when it needs it
+  }
+#if SHADOWC_WALK_DEFER
+  while ((marksLo | marksHi) != 0u) {
+    int b = shadowc_markPop(marksLo, marksHi);
+    int j = b / den;
+    shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
+  }
+#endif
+#elif SHADOWC_SAT_WIDE && !SHADOWC_SAT_FRACTIONAL
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
   int subs = den * den;
-#if SHADOWC_SAT_WIDE
   const int piece = shadowc_satPiece;
   // Every sub-kernel is at most ceil(size / den) texels a side, so only a root wider than den
   // pieces can have a sub-kernel wider than one.
   bool wideSubs = SHADOWC_SAT_PIECES > den && max(size.x, size.y) > piece * den;
-#else
-  const int piece = 1 << 30;  // one piece, however wide (fp32 SAT, or int32 boxes within 255)
-  const bool wideSubs = false;
-#endif
 #if SHADOWC_WALK_DEFER
   uint marksLo = 0u;  // bit k = j * den + i (k - 32 in marksHi): sub-kernel (i, j) is non-planar
   uint marksHi = 0u;
@@ -260,9 +309,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   int k = -1;              // box bands: the box (-1 the root, else sub-kernel k); k = subs: grid
   int j = 0;               // band
   int c = 0;               // the step reads columns c and c + 1
-#if SHADOWC_SAT_WIDE
   vec2 acc = vec2(0.0);    // a wide box's sum so far (box bands; a box within one piece is one cell)
-#endif
   shadowc_WalkSum lo = shadowc_WalkSum(0);  // the carried column's top and bottom corners, and its x
   shadowc_WalkSum hi = shadowc_WalkSum(0);
   int xc = 0;
@@ -292,13 +339,11 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     bool cell2 = cb > c && xb > xa && y1 > y0;
     float area1 = float((xa - xc) * (y1 - y0));
     float area2 = float((xb - xa) * (y1 - y0));
-#if SHADOWC_SAT_WIDE
     // Box bands add their cells in shadowc_summedSum's order (adding 0.0 changes no sum).
     if (!grid) {
       acc += cell1 ? vec2(s1) : vec2(0.0);
       acc += cell2 ? vec2(s2) : vec2(0.0);
     }
-#endif
     int bit = j * den + c;  // grid: sub-kernel (c, j)
     c += 2;
     bool bandEnd = c >= ncol;
@@ -319,11 +364,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     // Slot 2: grid sub-kernel (c, j) likewise, or a box whose last piece this step read.
     float area = grid ? area2 : float((box.z - box.x) * (box.w - box.y));
     bool on2 = grid ? cell2 : bandEnd && j >= cells.y && area > 0.0;
-#if SHADOWC_SAT_WIDE
     vec4 m = shadowc_walkMean(grid ? vec2(s2) : acc, max(area, 1.0));
-#else
-    vec4 m = shadowc_walkMean(vec2(s2), max(area, 1.0));  // a box within one piece: this step's cell (a, b)
-#endif
     // The root (k < 0) as shadowc_rootNeedsWalk (area > 0 where on2), a sub-kernel as
     // shadowc_qtAccept: one classification either way.
     bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly) == 1;
@@ -339,9 +380,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
       more = k < 0 ? nonPlanar : k + 1 < subs;  // the root walks on only when it needs it (its last band is this step)
       k = k < 0 && !wideSubs ? subs : k + 1;  // on to the grid, or to the next (wide) sub-kernel
       j = 0;
-#if SHADOWC_SAT_WIDE
       acc = vec2(0.0);
-#endif
     }
   }
 #if SHADOWC_WALK_DEFER

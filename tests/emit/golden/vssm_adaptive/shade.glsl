@@ -437,37 +437,34 @@ void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 228
+#line 234
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 234
+#line 240
 }
-#line 237
+#line 243
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
     shadowc_qtLeafBox(whole);
     return;
   }
-
+#line 298
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
   int subs = den * den;
-
   const int piece = shadowc_satPiece;
-#line 251
+#line 304
   bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
-#line 257
+
   uint marksLo = 0u;
   uint marksHi = 0u;
 
   int k = - 1;
   int j = 0;
   int c = 0;
-
   vec2 acc = vec2(0.0);
-
                 uvec2 lo = uvec2(0);
                 uvec2 hi = uvec2(0);
   int xc = 0;
@@ -479,7 +476,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 279
+#line 326
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -496,12 +493,11 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     bool cell2 = cb > c && xb > xa && y1 > y0;
     float area1 = float((xa - xc)*(y1 - y0));
     float area2 = float((xb - xa)*(y1 - y0));
-#line 297
+
     if(! grid){
       acc += cell1 ? vec2(s1): vec2(0.0);
       acc += cell2 ? vec2(s2): vec2(0.0);
     }
-
     int bit = j * den + c;
     c += 2;
     bool bandEnd = c >= ncol;
@@ -509,21 +505,20 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       c = 0;
       ++ j;
     }
-#line 312
+#line 357
     bool on1 = grid && cell1;
     bool nonPlanar1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true)== 1;
 
     shadowc_markSet(marksLo, marksHi, bit - 1, nonPlanar1);
-#line 320
+#line 365
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
     bool on2 = grid ? cell2 : bandEnd && j >= cells . y && area > 0.0;
-
     vec4 m = shadowc_walkMean(grid ? vec2(s2): acc, max(area, 1.0));
-#line 329
+#line 370
     bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly)== 1;
 
     shadowc_markSet(marksLo, marksHi, grid ? bit : k, k >= 0 && nonPlanar);
-#line 335
+#line 376
     lo = lb;
     hi = hb;
     xc = xb;
@@ -531,9 +526,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       more = k < 0 ? nonPlanar : k + 1 < subs;
       k = k < 0 && ! wideSubs ? subs : k + 1;
       j = 0;
-
       acc = vec2(0.0);
-
     }
   }
 
@@ -542,24 +535,24 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     int j = b / den;
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }
-#line 360
+#line 399
 }
-#line 369
+#line 408
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 372
+#line 411
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 383
+#line 422
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 397
+#line 436
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -587,12 +580,12 @@ void shadowc_qtWalk(int height){
   }
 
 }
-#line 427
+#line 466
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 436
+#line 475
   shadowc_uniformWalk(5, 0 != 0);
-#line 441
+#line 480
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -609,12 +602,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 459
+#line 498
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 465
+#line 504
   shadowc_qtWalk(3);
-#line 472
+#line 511
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -628,20 +621,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 492
+#line 531
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 500
+#line 539
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 509
+#line 548
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"

@@ -353,13 +353,13 @@ void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 228
+#line 234
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 234
+#line 240
 }
-#line 237
+#line 243
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -369,108 +369,68 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
-  int subs = den * den;
-#line 253
-  const int piece = 1 << 30;
-  const bool wideSubs = false;
-#line 260
-  int k = - 1;
-  int j = 0;
-  int c = 0;
-#line 266
-                uvec2 lo = uvec2(0);
-                uvec2 hi = uvec2(0);
-  int xc = 0;
+#line 257
+                uvec2 lo = shadowc_summedCorner(root . x - 1, root . y - 1, 0). xy;
+                uvec2 hi = shadowc_summedCorner(root . x - 1, root . y + size . y - 1, 0). xy;
+  int xc = root . x;
   bool more = true;
-  const int limit =(1 + 5 * 5)* 1 *
-                        (1 / 2 + 1)+ 5 *(5 / 2 + 1);
-  for(int step = 0;step < limit && more;++ step){
-    bool grid = k == subs;
+  for(int step = 0;step < 1 + den *(den + 1)&& more;++ step){
 
-    ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
-    ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 279
-    int ncol = grid ? den + 1 : cells . x + 1;
-    int cb = min(c + 1, ncol - 1);
-    int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
-    int y1 = grid ? root . y +((j + 1)* size . y)/ den : min(box . y +(j + 1)* piece, box . w);
-    int xa = grid ? root . x +(c * size . x)/ den : min(box . x + c * piece, box . z);
-    int xb = grid ? root . x +(cb * size . x)/ den : min(box . x + cb * piece, box . z);
+    bool grid = step > 0;
+    int g = step - 1;
+    int j = g /(den + 1);
+    int c = g - j *(den + 1);
+    int y0 = grid ? root . y +(j * size . y)/ den : root . y;
+    int y1 = grid ? root . y +((j + 1)* size . y)/ den : root . y + size . y;
+    int xa = grid ? root . x +(c * size . x)/ den : root . x + size . x;
                   uvec2 la = shadowc_summedCorner(xa - 1, y0 - 1, 0). xy;
                   uvec2 ha = shadowc_summedCorner(xa - 1, y1 - 1, 0). xy;
-                  uvec2 lb = shadowc_summedCorner(xb - 1, y0 - 1, 0). xy;
-                  uvec2 hb = shadowc_summedCorner(xb - 1, y1 - 1, 0). xy;
-                  uvec2 s1 = ha - hi - la + lo;
-                  uvec2 s2 = hb - ha - lb + la;
-    bool cell1 = c > 0 && xa > xc && y1 > y0;
-    bool cell2 = cb > c && xb > xa && y1 > y0;
-    float area1 = float((xa - xc)*(y1 - y0));
-    float area2 = float((xb - xa)*(y1 - y0));
-#line 302
-    int bit = j * den + c;
-    c += 2;
-    bool bandEnd = c >= ncol;
-    if(bandEnd){
-      c = 0;
-      ++ j;
-    }
-#line 312
-    bool on1 = grid && cell1;
-    bool nonPlanar1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true)== 1;
-#line 317
-    if(nonPlanar1)shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
-#line 320
-    float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
-    bool on2 = grid ? cell2 : bandEnd && j >= cells . y && area > 0.0;
-#line 325
-    vec4 m = shadowc_walkMean(vec2(s2), max(area, 1.0));
-#line 329
-    bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly)== 1;
-#line 333
-    if(k >= 0 && nonPlanar)shadowc_qtResolveLeaf(grid ? vec4(xa, y0, xb, y1): vec4(box));
+                  uvec2 sum = ha - hi - la + lo;
+#line 276
+    float area = float((xa - xc)*(y1 - y0));
+    bool cell =(! grid || c > 0)&& xa > xc && y1 > y0;
+    bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(area, 1.0)), cell ? area : 0.0,
+                                      grid || nonPlanarOnly)== 1;
+#line 283
+    if(grid && nonPlanar)shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 
-    lo = lb;
-    hi = hb;
-    xc = xb;
-    if(bandEnd && j >=(grid ? den : cells . y)){
-      more = k < 0 ? nonPlanar : k + 1 < subs;
-      k = k < 0 && ! wideSubs ? subs : k + 1;
-      j = 0;
-#line 345
-    }
+    lo = la;
+    hi = ha;
+    xc = xa;
+    more = grid || nonPlanar;
   }
-#line 360
+#line 399
 }
-#line 369
+#line 408
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 372
+#line 411
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 397
+#line 436
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
-#line 404
+#line 443
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 413
+#line 452
     if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
-#line 423
+#line 462
 }
-#line 427
+#line 466
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 436
+#line 475
   shadowc_uniformWalk(5, 0 != 0);
-#line 441
+#line 480
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -487,12 +447,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 459
+#line 498
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 465
+#line 504
   shadowc_qtWalk(3);
-#line 472
+#line 511
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -506,11 +466,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 503
+#line 542
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 509
+#line 548
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
