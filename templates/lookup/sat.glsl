@@ -78,32 +78,21 @@ const int shadowc_satPiece = 255;
 int shadowc_satCut(int lo, int hi, int i) { return min(lo - 1 + i * shadowc_satPiece, hi); }
 
 vec4 shadowc_summedSum(ivec4 rect, int layer) {
-  // One flat loop over the pieces, row by row, one column a step (its two corners), the piece
-  // left of it summed against the column carried from the step before; the first column of the
-  // first row is read before the loop, so a box within one piece is one step (4 reads). Nested
-  // loops over rows and columns cost every box two loops' first iterations on lavapipe, which runs
-  // a loop's first iteration for every SIMD group (vssm.glsl, shadowc_uniformWalk): the quadtree
-  // walk of a wide-SAT filter paid them per node. Each later row starts with a step that only
-  // reads its first column. The pieces are added in the same order as before (adding 0.0 changes
-  // no sum: every piece sum is >= 0).
   ivec2 pieces = (rect.zw - rect.xy + shadowc_satPiece) / shadowc_satPiece;
   vec4 sum = vec4(0.0);
-  uvec4 lo = shadowc_summedCorner(rect.x - 1, rect.y - 1, layer);
-  uvec4 hi = shadowc_summedCorner(rect.x - 1, shadowc_satCut(rect.y, rect.w, 1), layer);
-  int i = 1;  // the column this step reads (0: a row's first, no piece left of it)
-  int j = 0;  // the row
-  bool more = true;
-  for (int step = 0; step < SHADOWC_SAT_PIECES * (SHADOWC_SAT_PIECES + 1) && more; ++step) {
-    int x1 = shadowc_satCut(rect.x, rect.z, i);
-    uvec4 lo1 = shadowc_summedCorner(x1, shadowc_satCut(rect.y, rect.w, j), layer);
-    uvec4 hi1 = shadowc_summedCorner(x1, shadowc_satCut(rect.y, rect.w, j + 1), layer);
-    sum += i > 0 ? vec4(hi1 - hi - lo1 + lo) : vec4(0.0);
-    lo = lo1;
-    hi = hi1;
-    bool rowEnd = i >= pieces.x;
-    i = rowEnd ? 0 : i + 1;
-    j = rowEnd ? j + 1 : j;
-    more = j < pieces.y;
+  for (int j = 0; j < SHADOWC_SAT_PIECES && j < pieces.y; ++j) {
+    int y0 = shadowc_satCut(rect.y, rect.w, j);
+    int y1 = shadowc_satCut(rect.y, rect.w, j + 1);
+    uvec4 lo0 = shadowc_summedCorner(rect.x - 1, y0, layer);
+    uvec4 hi0 = shadowc_summedCorner(rect.x - 1, y1, layer);
+    for (int i = 1; i <= SHADOWC_SAT_PIECES && i <= pieces.x; ++i) {
+      int x1 = shadowc_satCut(rect.x, rect.z, i);
+      uvec4 lo1 = shadowc_summedCorner(x1, y0, layer);
+      uvec4 hi1 = shadowc_summedCorner(x1, y1, layer);
+      sum += vec4(hi1 - hi0 - lo1 + lo0);
+      lo0 = lo1;
+      hi0 = hi1;
+    }
   }
   return sum;
 }

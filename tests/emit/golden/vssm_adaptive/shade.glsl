@@ -216,35 +216,31 @@ const int shadowc_satPiece = 255;
 int shadowc_satCut(int lo, int hi, int i){ return min(lo - 1 + i * shadowc_satPiece, hi);}
 
 vec4 shadowc_summedSum(ivec4 rect, int layer){
-#line 89
   ivec2 pieces =(rect . zw - rect . xy + shadowc_satPiece)/ shadowc_satPiece;
   vec4 sum = vec4(0.0);
-  uvec4 lo = shadowc_summedCorner(rect . x - 1, rect . y - 1, layer);
-  uvec4 hi = shadowc_summedCorner(rect . x - 1, shadowc_satCut(rect . y, rect . w, 1), layer);
-  int i = 1;
-  int j = 0;
-  bool more = true;
-  for(int step = 0;step < 17 *(17 + 1)&& more;++ step){
-    int x1 = shadowc_satCut(rect . x, rect . z, i);
-    uvec4 lo1 = shadowc_summedCorner(x1, shadowc_satCut(rect . y, rect . w, j), layer);
-    uvec4 hi1 = shadowc_summedCorner(x1, shadowc_satCut(rect . y, rect . w, j + 1), layer);
-    sum += i > 0 ? vec4(hi1 - hi - lo1 + lo): vec4(0.0);
-    lo = lo1;
-    hi = hi1;
-    bool rowEnd = i >= pieces . x;
-    i = rowEnd ? 0 : i + 1;
-    j = rowEnd ? j + 1 : j;
-    more = j < pieces . y;
+  for(int j = 0;j < 17 && j < pieces . y;++ j){
+    int y0 = shadowc_satCut(rect . y, rect . w, j);
+    int y1 = shadowc_satCut(rect . y, rect . w, j + 1);
+    uvec4 lo0 = shadowc_summedCorner(rect . x - 1, y0, layer);
+    uvec4 hi0 = shadowc_summedCorner(rect . x - 1, y1, layer);
+    for(int i = 1;i <= 17 && i <= pieces . x;++ i){
+      int x1 = shadowc_satCut(rect . x, rect . z, i);
+      uvec4 lo1 = shadowc_summedCorner(x1, y0, layer);
+      uvec4 hi1 = shadowc_summedCorner(x1, y1, layer);
+      sum += vec4(hi1 - hi0 - lo1 + lo0);
+      lo0 = lo1;
+      hi0 = hi1;
+    }
   }
   return sum;
 }
-#line 113
+#line 102
 vec4 shadowc_summedMean(ivec4 rect, int layer){
   float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
   area = max(area, 1.0);
 
   return shadowc_summedSum(rect, layer)/(65536.0 * area);
-#line 124
+#line 113
 }
 #line 43 "lookup/shadowc_lookup.glsl"
 

@@ -178,11 +178,11 @@ vec4 shadowc_satMeanOfSum(uvec4 sum, float area){
   return vec4(sum)/(65536.0 * area);
 #line 59
 }
-#line 113
+#line 102
 vec4 shadowc_summedMean(ivec4 rect, int layer){
   float area = float((rect . z - rect . x + 1)*(rect . w - rect . y + 1));
   area = max(area, 1.0);
-#line 119
+#line 108
                uvec4 sum = shadowc_summedCorner(rect . z, rect . w, layer)- shadowc_summedCorner(rect . x - 1, rect . w, layer)-
                        shadowc_summedCorner(rect . z, rect . y - 1, layer)+
                        shadowc_summedCorner(rect . x - 1, rect . y - 1, layer);
