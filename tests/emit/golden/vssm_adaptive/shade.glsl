@@ -437,25 +437,33 @@ void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 234
+#line 236
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 240
+#line 242
 }
-#line 243
+#line 247
+void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den){
+  while((marksLo | marksHi)!= 0u){
+    int b = shadowc_markPop(marksLo, marksHi);
+    int j = b / den;
+    shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
+  }
+}
+#line 256
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
     shadowc_qtLeafBox(whole);
     return;
   }
-#line 298
+#line 307
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
   int subs = den * den;
   const int piece = shadowc_satPiece;
-#line 304
+#line 313
   bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
 
   uint marksLo = 0u;
@@ -476,7 +484,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 326
+#line 335
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -505,20 +513,20 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       c = 0;
       ++ j;
     }
-#line 357
+#line 366
     bool on1 = grid && cell1;
     bool nonPlanar1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true)== 1;
 
     shadowc_markSet(marksLo, marksHi, bit - 1, nonPlanar1);
-#line 365
+#line 374
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
     bool on2 = grid ? cell2 : bandEnd && j >= cells . y && area > 0.0;
     vec4 m = shadowc_walkMean(grid ? vec2(s2): acc, max(area, 1.0));
-#line 370
+#line 379
     bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly)== 1;
 
     shadowc_markSet(marksLo, marksHi, grid ? bit : k, k >= 0 && nonPlanar);
-#line 376
+#line 385
     lo = lb;
     hi = hb;
     xc = xb;
@@ -530,29 +538,25 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     }
   }
 
-  while((marksLo | marksHi)!= 0u){
-    int b = shadowc_markPop(marksLo, marksHi);
-    int j = b / den;
-    shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
-  }
-#line 399
+  shadowc_uniformResolveMarks(marksLo, marksHi, den);
+#line 404
 }
-#line 408
+#line 413
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 411
+#line 416
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 422
+#line 427
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 436
+#line 441
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -580,12 +584,12 @@ void shadowc_qtWalk(int height){
   }
 
 }
-#line 466
+#line 471
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 475
-  shadowc_uniformWalk(5, 0 != 0);
 #line 480
+  shadowc_uniformWalk(5, 0 != 0);
+#line 485
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -602,12 +606,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 498
+#line 503
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 504
+#line 509
   shadowc_qtWalk(3);
-#line 511
+#line 516
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -621,20 +625,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 531
+#line 536
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 539
+#line 544
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 548
+#line 553
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"

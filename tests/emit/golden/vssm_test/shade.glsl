@@ -353,13 +353,13 @@ void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 234
+#line 236
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 240
+#line 242
 }
-#line 243
+#line 256
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -369,7 +369,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
-#line 257
+#line 270
                 uvec2 lo = shadowc_summedCorner(root . x - 1, root . y - 1, 0). xy;
                 uvec2 hi = shadowc_summedCorner(root . x - 1, root . y + size . y - 1, 0). xy;
   int xc = root . x;
@@ -386,12 +386,12 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
                   uvec2 la = shadowc_summedCorner(xa - 1, y0 - 1, 0). xy;
                   uvec2 ha = shadowc_summedCorner(xa - 1, y1 - 1, 0). xy;
                   uvec2 sum = ha - hi - la + lo;
-#line 276
+#line 289
     float area = float((xa - xc)*(y1 - y0));
     bool cell =(! grid || c > 0)&& xa > xc && y1 > y0;
     bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(area, 1.0)), cell ? area : 0.0,
                                       grid || nonPlanarOnly)== 1;
-#line 283
+#line 296
     if(grid && nonPlanar)shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 
     lo = la;
@@ -399,38 +399,38 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     xc = xa;
     more = grid || nonPlanar;
   }
-#line 399
+#line 404
 }
-#line 408
+#line 413
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 411
+#line 416
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 436
+#line 441
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
-#line 443
+#line 448
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 452
+#line 457
     if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
-#line 462
+#line 467
 }
-#line 466
+#line 471
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 475
-  shadowc_uniformWalk(5, 0 != 0);
 #line 480
+  shadowc_uniformWalk(5, 0 != 0);
+#line 485
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -447,12 +447,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 498
+#line 503
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 504
+#line 509
   shadowc_qtWalk(3);
-#line 511
+#line 516
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -466,11 +466,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 542
+#line 547
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 548
+#line 553
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
