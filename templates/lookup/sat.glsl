@@ -31,13 +31,13 @@ const float shadowc_satVarianceFloor = 0.0;
 
 #if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
 uvec4 shadowc_summedCorner(int x, int y, int layer) {
-  if (x < 0 || y < 0) return uvec4(0u);
-  return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
+  uvec4 v = texelFetch(shadowc_summedArea, ivec3(max(x, 0), max(y, 0), layer), 0);
+  return x < 0 || y < 0 ? uvec4(0u) : v;
 }
 #else
 vec4 shadowc_summedCorner(int x, int y, int layer) {
-  if (x < 0 || y < 0) return vec4(0.0);
-  return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
+  vec4 v = texelFetch(shadowc_summedArea, ivec3(max(x, 0), max(y, 0), layer), 0);
+  return x < 0 || y < 0 ? vec4(0.0) : v;
 }
 #endif
 

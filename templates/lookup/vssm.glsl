@@ -253,12 +253,80 @@ void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den) {
 }
 #endif
 
+#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL && !SHADOWC_SAT_WIDE && SHADOWC_UNIFORM_MAX_DEN <= 8
+#define SHADOWC_BAND_WALK 1
+// `always` (sec. 5.2, every root that is not fully lit is subdivided): nearly every group that
+// gets here walks, so what counts is the walk's reads, not what a group that does not walk pays.
+// The root's four corners first (Algorithm 2 L9-L11 at the root, as shadowc_rootNeedsWalk), then
+// one step a ROW of corners: den + 1 reads, the row above carried in `top`, the den cells of the
+// band between them classified left to right (the column walk's order, so every sum and every
+// accumulator is bit-identical). den = 5: 4 + 36 corner reads in 6 steps, against 64 in 31 steps
+// for the column walk below; a group that does not walk pays the first step (the top row, no
+// cells) on top of the root. The inner loop has a constant trip count once den is (the driver
+// unrolls it and `top` stays in registers), hence den <= 8 only.
+void shadowc_uniformBandWalk(int den) {
+  ivec2 root = ivec2(shadowc_vRoot.xy);
+  ivec2 size = ivec2(shadowc_vRoot.zw) - root;
+  shadowc_WalkSum lo = shadowc_summedCorner(root.x - 1, root.y - 1, 0).xy;
+  shadowc_WalkSum hi = shadowc_summedCorner(root.x - 1, root.y + size.y - 1, 0).xy;
+  shadowc_WalkSum la = shadowc_summedCorner(root.x + size.x - 1, root.y - 1, 0).xy;
+  shadowc_WalkSum ha = shadowc_summedCorner(root.x + size.x - 1, root.y + size.y - 1, 0).xy;
+  float area = float(size.x * size.y);
+  bool there = size.x > 0 && size.y > 0;
+  int rows = shadowc_classify(shadowc_walkMean(vec2(ha - hi - la + lo), max(area, 1.0)), there ? area : 0.0,
+                              false) == 1 ? den + 1 : 0;
+#if SHADOWC_WALK_DEFER
+  uint marksLo = 0u;  // bit k = j * den + i (k - 32 in marksHi): sub-kernel (i, j) is non-planar
+  uint marksHi = 0u;
+#endif
+  shadowc_WalkSum top[SHADOWC_UNIFORM_MAX_DEN + 1];  // the row of corners above the band
+  for (int c = 0; c <= den; ++c) top[c] = shadowc_WalkSum(0);
+  int yt = root.y;  // its texel edge
+  for (int r = 0; r < rows; ++r) {
+    // Row r of corners (row 0: the root's top edge, no cells above it), texel edge yb.
+    int yb = root.y + int(uint(r * size.y) / uint(den));
+    shadowc_WalkSum left = shadowc_summedCorner(root.x - 1, yb - 1, 0).xy;
+    int xl = root.x;
+    for (int c = 1; c <= den; ++c) {
+      int xr = root.x + int(uint(c * size.x) / uint(den));
+      shadowc_WalkSum right = shadowc_summedCorner(xr - 1, yb - 1, 0).xy;
+      shadowc_WalkSum sum = right - left - top[c] + top[c - 1];  // cell (c - 1, r - 1)
+      float cellArea = float((xr - xl) * (yb - yt));
+      bool cell = r > 0 && xr > xl && yb > yt;
+      bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(cellArea, 1.0)), cell ? cellArea : 0.0,
+                                        true) == 1;
+#if SHADOWC_WALK_DEFER
+      shadowc_markSet(marksLo, marksHi, (r - 1) * den + c - 1, nonPlanar);
+#else
+      if (nonPlanar) shadowc_qtResolveLeaf(vec4(xl, yt, xr, yb));
+#endif
+      top[c - 1] = left;
+      left = right;
+      xl = xr;
+    }
+    top[den] = left;
+    yt = yb;
+  }
+#if SHADOWC_WALK_DEFER
+  shadowc_uniformResolveMarks(marksLo, marksHi, den);
+#endif
+}
+#else
+#define SHADOWC_BAND_WALK 0
+#endif
+
 void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if (den == 1) {  // no subdivision: the root is the one leaf (the same corners as the walk's)
     shadowc_qtLeafBox(whole);
     return;
   }
+#if SHADOWC_BAND_WALK
+  if (!nonPlanarOnly) {
+    shadowc_uniformBandWalk(den);
+    return;
+  }
+#endif
 #if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL && !SHADOWC_SAT_WIDE
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
@@ -275,11 +343,11 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     // Step 0: the root's right column. Step 1 + j * (den + 1) + c: column c of grid band j.
     bool grid = step > 0;
     int g = step - 1;
-    int j = g / (den + 1);
+    int j = int(uint(g) / uint(den + 1));
     int c = g - j * (den + 1);
-    int y0 = grid ? root.y + (j * size.y) / den : root.y;
-    int y1 = grid ? root.y + ((j + 1) * size.y) / den : root.y + size.y;
-    int xa = grid ? root.x + (c * size.x) / den : root.x + size.x;
+    int y0 = grid ? root.y + int(uint(j * size.y) / uint(den)) : root.y;
+    int y1 = grid ? root.y + int(uint((j + 1) * size.y) / uint(den)) : root.y + size.y;
+    int xa = grid ? root.x + int(uint(c * size.x) / uint(den)) : root.x + size.x;
     shadowc_WalkSum la = shadowc_summedCorner(xa - 1, y0 - 1, 0).xy;
     shadowc_WalkSum ha = shadowc_summedCorner(xa - 1, y1 - 1, 0).xy;
     shadowc_WalkSum sum = ha - hi - la + lo;  // the cell (carried column, this one)
@@ -415,9 +483,8 @@ ivec3 shadowc_qtNextNode(ivec3 n) {
   // most the node's level (findLSB(z) for z = 2^level); no loop.
   int up = min(findLSB(~(n.x & n.y)), findLSB(n.z));
   n = ivec3(n.xy >> up, n.z >> up);
-  if (n.z <= 1) return ivec3(0);
   int c = (n.x & 1) + 2 * (n.y & 1) + 1;
-  return ivec3((n.x & ~1) | (c & 1), (n.y & ~1) | (c >> 1), n.z);
+  return n.z <= 1 ? ivec3(0) : ivec3((n.x & ~1) | (c & 1), (n.y & ~1) | (c >> 1), n.z);
 }
 
 #if SHADOWC_FALLBACK_PCF

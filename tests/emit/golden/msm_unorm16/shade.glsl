@@ -123,11 +123,11 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
 #line 1 "lookup/chebyshev.glsl"
 #line 14
 float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance){
-  if(t <= mean)return 1.0;
   float variance = max(meanSq - mean * mean, minVariance);
   float dt = t - mean;
   float denom = variance + dt * dt;
-  return denom > 0.0 ? shadowc_unit(variance / denom): 0.0;
+  float p = denom > 0.0 ? shadowc_unit(variance / denom): 0.0;
+  return t <= mean ? 1.0 : p;
 }
 
 float shadowc_reduceBleeding(float p){

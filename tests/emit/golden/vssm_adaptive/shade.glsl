@@ -183,11 +183,11 @@ float shadowc_earlyOut(ivec4 rect, float dLo, float dHi){
 #line 1 "lookup/chebyshev.glsl"
 #line 14
 float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance){
-  if(t <= mean)return 1.0;
   float variance = max(meanSq - mean * mean, minVariance);
   float dt = t - mean;
   float denom = variance + dt * dt;
-  return denom > 0.0 ? shadowc_unit(variance / denom): 0.0;
+  float p = denom > 0.0 ? shadowc_unit(variance / denom): 0.0;
+  return t <= mean ? 1.0 : p;
 }
 
 float shadowc_reduceBleeding(float p){
@@ -201,8 +201,8 @@ float shadowc_reduceBleeding(float p){
 const float shadowc_satVarianceFloor = 2.4e-5;
 #line 33
 uvec4 shadowc_summedCorner(int x, int y, int layer){
-  if(x < 0 || y < 0)return uvec4(0u);
-  return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
+  uvec4 v = texelFetch(shadowc_summedArea, ivec3(max(x, 0), max(y, 0), layer), 0);
+  return x < 0 || y < 0 ? uvec4(0u): v;
 }
 #line 51
 vec4 shadowc_satMeanOfSum(uvec4 sum, float area){
@@ -451,19 +451,19 @@ void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den){
     shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
   }
 }
-#line 256
+#line 318
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
     shadowc_qtLeafBox(whole);
     return;
   }
-#line 307
+#line 375
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
   int subs = den * den;
   const int piece = shadowc_satPiece;
-#line 313
+#line 381
   bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
 
   uint marksLo = 0u;
@@ -484,7 +484,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 335
+#line 403
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -513,20 +513,20 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       c = 0;
       ++ j;
     }
-#line 366
+#line 434
     bool on1 = grid && cell1;
     bool nonPlanar1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true)== 1;
 
     shadowc_markSet(marksLo, marksHi, bit - 1, nonPlanar1);
-#line 374
+#line 442
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
     bool on2 = grid ? cell2 : bandEnd && j >= cells . y && area > 0.0;
     vec4 m = shadowc_walkMean(grid ? vec2(s2): acc, max(area, 1.0));
-#line 379
+#line 447
     bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly)== 1;
 
     shadowc_markSet(marksLo, marksHi, grid ? bit : k, k >= 0 && nonPlanar);
-#line 385
+#line 453
     lo = lb;
     hi = hb;
     xc = xb;
@@ -539,24 +539,23 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   }
 
   shadowc_uniformResolveMarks(marksLo, marksHi, den);
-#line 404
+#line 472
 }
-#line 413
+#line 481
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 416
+#line 484
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
-  if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
-  return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
+  return n . z <= 1 ? ivec3(0): ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 427
+#line 494
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 441
+#line 508
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -584,12 +583,12 @@ void shadowc_qtWalk(int height){
   }
 
 }
-#line 471
+#line 538
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 480
+#line 547
   shadowc_uniformWalk(5, 0 != 0);
-#line 485
+#line 552
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -606,12 +605,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 503
+#line 570
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 509
+#line 576
   shadowc_qtWalk(3);
-#line 516
+#line 583
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -625,20 +624,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 536
+#line 603
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 544
+#line 611
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 553
+#line 620
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"

@@ -151,11 +151,11 @@ float shadowc_earlyOut(ivec4 rect, float dLo, float dHi){
 #line 1 "lookup/chebyshev.glsl"
 #line 14
 float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance){
-  if(t <= mean)return 1.0;
   float variance = max(meanSq - mean * mean, minVariance);
   float dt = t - mean;
   float denom = variance + dt * dt;
-  return denom > 0.0 ? shadowc_unit(variance / denom): 0.0;
+  float p = denom > 0.0 ? shadowc_unit(variance / denom): 0.0;
+  return t <= mean ? 1.0 : p;
 }
 
 float shadowc_reduceBleeding(float p){
@@ -169,8 +169,8 @@ float shadowc_reduceBleeding(float p){
 const float shadowc_satVarianceFloor = 2.4e-5;
 #line 33
 uvec4 shadowc_summedCorner(int x, int y, int layer){
-  if(x < 0 || y < 0)return uvec4(0u);
-  return texelFetch(shadowc_summedArea, ivec3(x, y, layer), 0);
+  uvec4 v = texelFetch(shadowc_summedArea, ivec3(max(x, 0), max(y, 0), layer), 0);
+  return x < 0 || y < 0 ? uvec4(0u): v;
 }
 #line 51
 vec4 shadowc_satMeanOfSum(uvec4 sum, float area){
@@ -359,7 +359,48 @@ vec4 shadowc_walkMean(vec2 sum, float area){
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
 #line 242
 }
-#line 256
+#line 267
+void shadowc_uniformBandWalk(int den){
+  ivec2 root = ivec2(shadowc_vRoot . xy);
+  ivec2 size = ivec2(shadowc_vRoot . zw)- root;
+                uvec2 lo = shadowc_summedCorner(root . x - 1, root . y - 1, 0). xy;
+                uvec2 hi = shadowc_summedCorner(root . x - 1, root . y + size . y - 1, 0). xy;
+                uvec2 la = shadowc_summedCorner(root . x + size . x - 1, root . y - 1, 0). xy;
+                uvec2 ha = shadowc_summedCorner(root . x + size . x - 1, root . y + size . y - 1, 0). xy;
+  float area = float(size . x * size . y);
+  bool there = size . x > 0 && size . y > 0;
+  int rows = shadowc_classify(shadowc_walkMean(vec2(ha - hi - la + lo), max(area, 1.0)), there ? area : 0.0,
+                              false)== 1 ? den + 1 : 0;
+#line 282
+                uvec2 top[5 + 1];
+  for(int c = 0;c <= den;++ c)top[c]= uvec2(0);
+  int yt = root . y;
+  for(int r = 0;r < rows;++ r){
+
+    int yb = root . y + int(uint(r * size . y)/ uint(den));
+                  uvec2 left = shadowc_summedCorner(root . x - 1, yb - 1, 0). xy;
+    int xl = root . x;
+    for(int c = 1;c <= den;++ c){
+      int xr = root . x + int(uint(c * size . x)/ uint(den));
+                    uvec2 right = shadowc_summedCorner(xr - 1, yb - 1, 0). xy;
+                    uvec2 sum = right - left - top[c]+ top[c - 1];
+      float cellArea = float((xr - xl)*(yb - yt));
+      bool cell = r > 0 && xr > xl && yb > yt;
+      bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(cellArea, 1.0)), cell ? cellArea : 0.0,
+                                        true)== 1;
+#line 301
+      if(nonPlanar)shadowc_qtResolveLeaf(vec4(xl, yt, xr, yb));
+
+      top[c - 1]= left;
+      left = right;
+      xl = xr;
+    }
+    top[den]= left;
+    yt = yb;
+  }
+#line 313
+}
+#line 318
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -367,9 +408,14 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     return;
   }
 
+  if(! nonPlanarOnly){
+    shadowc_uniformBandWalk(den);
+    return;
+  }
+#line 331
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
-#line 270
+#line 338
                 uvec2 lo = shadowc_summedCorner(root . x - 1, root . y - 1, 0). xy;
                 uvec2 hi = shadowc_summedCorner(root . x - 1, root . y + size . y - 1, 0). xy;
   int xc = root . x;
@@ -378,20 +424,20 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     bool grid = step > 0;
     int g = step - 1;
-    int j = g /(den + 1);
+    int j = int(uint(g)/ uint(den + 1));
     int c = g - j *(den + 1);
-    int y0 = grid ? root . y +(j * size . y)/ den : root . y;
-    int y1 = grid ? root . y +((j + 1)* size . y)/ den : root . y + size . y;
-    int xa = grid ? root . x +(c * size . x)/ den : root . x + size . x;
+    int y0 = grid ? root . y + int(uint(j * size . y)/ uint(den)): root . y;
+    int y1 = grid ? root . y + int(uint((j + 1)* size . y)/ uint(den)): root . y + size . y;
+    int xa = grid ? root . x + int(uint(c * size . x)/ uint(den)): root . x + size . x;
                   uvec2 la = shadowc_summedCorner(xa - 1, y0 - 1, 0). xy;
                   uvec2 ha = shadowc_summedCorner(xa - 1, y1 - 1, 0). xy;
                   uvec2 sum = ha - hi - la + lo;
-#line 289
+#line 357
     float area = float((xa - xc)*(y1 - y0));
     bool cell =(! grid || c > 0)&& xa > xc && y1 > y0;
     bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(area, 1.0)), cell ? area : 0.0,
                                       grid || nonPlanarOnly)== 1;
-#line 296
+#line 364
     if(grid && nonPlanar)shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 
     lo = la;
@@ -399,38 +445,37 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     xc = xa;
     more = grid || nonPlanar;
   }
-#line 404
+#line 472
 }
-#line 413
+#line 481
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 416
+#line 484
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
-  if(n . z <= 1)return ivec3(0);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
-  return ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
+  return n . z <= 1 ? ivec3(0): ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 441
+#line 508
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
-#line 448
+#line 515
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 457
+#line 524
     if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
-#line 467
+#line 534
 }
-#line 471
+#line 538
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 480
+#line 547
   shadowc_uniformWalk(5, 0 != 0);
-#line 485
+#line 552
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -447,12 +492,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 503
+#line 570
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 509
+#line 576
   shadowc_qtWalk(3);
-#line 516
+#line 583
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -466,11 +511,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 547
+#line 614
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 553
+#line 620
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
