@@ -160,9 +160,13 @@ void shadowc_markSet(inout uint lo, inout uint hi, int b, bool on) {
   hi |= b >= 32 ? m : 0u;
 }
 
-// The lowest set bit, cleared (the walk's own order); call while (lo | hi) != 0.
+// The lowest set bit, cleared (the walk's own order); call while (lo | hi) != 0. -1 when both
+// words are empty, which only the loop's first iteration in a group whose lanes marked nothing
+// sees (lavapipe runs it masked): the callers then read texel (0, 0), which stays in cache,
+// instead of a leaf at an arbitrary place (callgrind, 2048^2 map: the masked taps' 52-108 K
+// first-level misses a frame went to 0; docs/performance.md "A row of corners a step").
 int shadowc_markPop(inout uint lo, inout uint hi) {
-  int b = lo != 0u ? findLSB(lo) : 32 + findLSB(hi);
+  int b = lo != 0u ? findLSB(lo) : hi != 0u ? 32 + findLSB(hi) : -1;
   if (b < 32) lo &= lo - 1u;
   else hi &= hi - 1u;
   return b;
@@ -248,7 +252,8 @@ void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den) {
   while ((marksLo | marksHi) != 0u) {
     int b = shadowc_markPop(marksLo, marksHi);
     int j = b / den;
-    shadowc_qtResolveLeaf(shadowc_subBox(ivec3(b - j * den, j, den)));
+    vec4 box = shadowc_subBox(ivec3(b - j * den, j, den));
+    shadowc_qtResolveLeaf(b < 0 ? vec4(0.0, 0.0, 1.0, 1.0) : box);
   }
 }
 #endif
@@ -528,7 +533,8 @@ void shadowc_qtWalk(int height) {
 #if SHADOWC_FALLBACK_PCF
   while ((marksLo | marksHi) != 0u) {
     int b = shadowc_markPop(marksLo, marksHi);
-    shadowc_qtResolveLeaf(shadowc_qtBox(ivec3(shadowc_qtUnmorton(b), shadowc_qtUnmorton(b >> 1), 1 << height)));
+    vec4 box = shadowc_qtBox(ivec3(shadowc_qtUnmorton(b), shadowc_qtUnmorton(b >> 1), 1 << height));
+    shadowc_qtResolveLeaf(b < 0 ? vec4(0.0, 0.0, 1.0, 1.0) : box);
   }
 #endif
 }
