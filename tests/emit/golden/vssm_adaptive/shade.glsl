@@ -430,41 +430,44 @@ int shadowc_markPop(inout uint lo, inout uint hi){
   else hi &= hi - 1u;
   return b;
 }
-#line 177
+#line 176
+void shadowc_markResolve(int b, vec4 box){ shadowc_qtResolveLeaf(b < 0 ? vec4(0.0, 0.0, 1.0, 1.0): box);}
+#line 180
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
-#line 185
+
+#line 1 "lookup/uniform_walk.glsl"
+#line 14
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 240
+#line 69
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 246
+#line 75
 }
-#line 251
+#line 80
 void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den){
   while((marksLo | marksHi)!= 0u){
     int b = shadowc_markPop(marksLo, marksHi);
     int j = b / den;
-    vec4 box = shadowc_subBox(ivec3(b - j * den, j, den));
-    shadowc_qtResolveLeaf(b < 0 ? vec4(0.0, 0.0, 1.0, 1.0): box);
+    shadowc_markResolve(b, shadowc_subBox(ivec3(b - j * den, j, den)));
   }
 }
-#line 323
+#line 151
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
     shadowc_qtLeafBox(whole);
     return;
   }
-#line 380
+#line 208
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
   int subs = den * den;
   const int piece = shadowc_satPiece;
-#line 386
+#line 214
   bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
 
   uint marksLo = 0u;
@@ -485,7 +488,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 408
+#line 236
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -514,20 +517,20 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       c = 0;
       ++ j;
     }
-#line 439
+#line 267
     bool on1 = grid && cell1;
     bool nonPlanar1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true)== 1;
 
     shadowc_markSet(marksLo, marksHi, bit - 1, nonPlanar1);
-#line 447
+#line 275
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
     bool on2 = grid ? cell2 : bandEnd && j >= cells . y && area > 0.0;
     vec4 m = shadowc_walkMean(grid ? vec2(s2): acc, max(area, 1.0));
-#line 452
+#line 280
     bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly)== 1;
 
     shadowc_markSet(marksLo, marksHi, grid ? bit : k, k >= 0 && nonPlanar);
-#line 458
+#line 286
     lo = lb;
     hi = hb;
     xc = xb;
@@ -540,23 +543,24 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   }
 
   shadowc_uniformResolveMarks(marksLo, marksHi, den);
-#line 477
+#line 305
 }
-#line 486
+#line 184 "lookup/vssm.glsl"
+#line 192
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 489
+#line 195
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return n . z <= 1 ? ivec3(0): ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 499
+#line 205
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 513
+#line 219
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
 
@@ -580,17 +584,16 @@ void shadowc_qtWalk(int height){
 
   while((marksLo | marksHi)!= 0u){
     int b = shadowc_markPop(marksLo, marksHi);
-    vec4 box = shadowc_qtBox(ivec3(shadowc_qtUnmorton(b), shadowc_qtUnmorton(b >> 1), 1 << height));
-    shadowc_qtResolveLeaf(b < 0 ? vec4(0.0, 0.0, 1.0, 1.0): box);
+    shadowc_markResolve(b, shadowc_qtBox(ivec3(shadowc_qtUnmorton(b), shadowc_qtUnmorton(b >> 1), 1 << height)));
   }
 
 }
-#line 544
+#line 249
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 553
+#line 258
   shadowc_uniformWalk(5, 0 != 0);
-#line 558
+#line 263
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -607,12 +610,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 576
+#line 281
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 582
+#line 287
   shadowc_qtWalk(3);
-#line 589
+#line 294
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -626,20 +629,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 609
+#line 314
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 617
+#line 322
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 626
+#line 331
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"

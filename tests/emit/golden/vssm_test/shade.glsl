@@ -346,20 +346,22 @@ void shadowc_qtResolveLeaf(vec4 box){
 void shadowc_qtLeafBox(vec4 box){
   if(shadowc_qtClassifyBox(box)== 1)shadowc_qtResolveLeaf(box);
 }
-#line 177
+#line 180
 bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
-#line 185
+
+#line 1 "lookup/uniform_walk.glsl"
+#line 14
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 240
+#line 69
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 246
+#line 75
 }
-#line 272
+#line 100
 void shadowc_uniformBandWalk(int den){
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
@@ -371,7 +373,7 @@ void shadowc_uniformBandWalk(int den){
   bool there = size . x > 0 && size . y > 0;
   int rows = shadowc_classify(shadowc_walkMean(vec2(ha - hi - la + lo), max(area, 1.0)), there ? area : 0.0,
                               false)== 1 ? den + 1 : 0;
-#line 287
+#line 115
                 uvec2 top[5 + 1];
   for(int c = 0;c <= den;++ c)top[c]= uvec2(0);
   int yt = root . y;
@@ -388,7 +390,7 @@ void shadowc_uniformBandWalk(int den){
       bool cell = r > 0 && xr > xl && yb > yt;
       bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(cellArea, 1.0)), cell ? cellArea : 0.0,
                                         true)== 1;
-#line 306
+#line 134
       if(nonPlanar)shadowc_qtResolveLeaf(vec4(xl, yt, xr, yb));
 
       top[c - 1]= left;
@@ -398,9 +400,9 @@ void shadowc_uniformBandWalk(int den){
     top[den]= left;
     yt = yb;
   }
-#line 318
+#line 146
 }
-#line 323
+#line 151
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -412,10 +414,10 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     shadowc_uniformBandWalk(den);
     return;
   }
-#line 336
+#line 164
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
-#line 343
+#line 171
                 uvec2 lo = shadowc_summedCorner(root . x - 1, root . y - 1, 0). xy;
                 uvec2 hi = shadowc_summedCorner(root . x - 1, root . y + size . y - 1, 0). xy;
   int xc = root . x;
@@ -432,12 +434,12 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
                   uvec2 la = shadowc_summedCorner(xa - 1, y0 - 1, 0). xy;
                   uvec2 ha = shadowc_summedCorner(xa - 1, y1 - 1, 0). xy;
                   uvec2 sum = ha - hi - la + lo;
-#line 362
+#line 190
     float area = float((xa - xc)*(y1 - y0));
     bool cell =(! grid || c > 0)&& xa > xc && y1 > y0;
     bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(area, 1.0)), cell ? area : 0.0,
                                       grid || nonPlanarOnly)== 1;
-#line 369
+#line 197
     if(grid && nonPlanar)shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
 
     lo = la;
@@ -445,37 +447,38 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     xc = xa;
     more = grid || nonPlanar;
   }
-#line 477
+#line 305
 }
-#line 486
+#line 184 "lookup/vssm.glsl"
+#line 192
 ivec3 shadowc_qtNextNode(ivec3 n){
-#line 489
+#line 195
   int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
   n = ivec3(n . xy >> up, n . z >> up);
   int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
   return n . z <= 1 ? ivec3(0): ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
 }
-#line 513
+#line 219
 void shadowc_qtWalk(int height){
   ivec3 n = ivec3(0, 0, 1);
-#line 520
+#line 226
   for(int step = 0;step < 85 && n . z > 0;++ step){
     vec4 box = shadowc_qtBox(n);
     bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
     bool leaf = n . z >=(1 << height);
-#line 529
+#line 235
     if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
     n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
                            : shadowc_qtNextNode(n);
   }
-#line 540
+#line 245
 }
-#line 544
+#line 249
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 553
+#line 258
   shadowc_uniformWalk(5, 0 != 0);
-#line 558
+#line 263
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -492,12 +495,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 576
+#line 281
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 582
+#line 287
   shadowc_qtWalk(3);
-#line 589
+#line 294
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -511,11 +514,11 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 620
+#line 325
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 626
+#line 331
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
