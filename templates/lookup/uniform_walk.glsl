@@ -26,18 +26,23 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 // loop whose step 0 is the root box, which every lane needs, and whose later steps only walking
 // lanes take (a second loop for the sub-kernels cost every group one masked row). What a group
 // that does not walk pays is therefore one step, whatever the step holds, and what a walking group
-// pays is the steps times that: each step reads ONE column of a band (its two corners, 2 texel
-// reads) and classifies the ONE cell between it and the column carried from the step before. The
-// root's first column is read before the loop, so step 0 is the root (4 reads, one
+// pays is the steps times that: each step reads ONE row of a column band (its two corners, 2
+// texel reads) and classifies the ONE cell between it and the row carried from the step before.
+// The root's top row is read before the loop, so step 0 is the root (4 reads, one
 // classification: what the quadtree walk's first step costs), and the grid takes den + 1 steps a
-// band (its first column has no cell left of it): den = 5 reads 60 corners in 30 steps (100 as
-// separate boxes). A step with two cells (two columns, 15 steps for den = 5) cost every group that
+// band (its first row has no cell above it): den = 5 reads 60 corners in 30 steps (100 as
+// separate boxes). A step with two cells (two rows, 15 steps for den = 5) cost every group that
 // does not walk a second classification: the mixed scheme was 4 % behind H = 3 alone on planar
 // scenes with the min-max early out, where no group walks (callgrind, docs/performance.md
-// "One column per step").
+// "One column per step"). Rows, not columns: a step's two corners lie on one texel row, and so
+// do the root's first two. Measured, not derived (cache simulation of the CPU lavapipe runs on,
+// 2048^2 map with the early out on two_planes, where no group walks): the column walk's shade
+// missed the first-level cache 174 K times a 256^2 frame and this one 154 K, and the mixed scheme
+// went from 3-9 % behind H = 3 alone to 1-6 % ahead (docs/performance.md "Rows, not columns").
+// Reading the root's rows but walking the grid by columns did not do it (183 K misses).
 // Every sum is the same four corners in the same order as sat.glsl's, so each box mean is
 // bit-identical to a separate box query. Non-planar sub-kernels are marked in a bit mask and get
-// their PCF in one loop over the set bits after the walk, in the walk's order (their sums are their
+// their PCF in one loop over the set bits after the walk, in row-major order (their sums are their
 // own accumulators, so the results are bit-identical): a group pays the most PCFs any of its lanes
 // needs, plus one masked PCF, instead of a masked PCF per step. With den^2 > 64 (and generic
 // shaders) a leaf's PCF is done in place. (A mask *array* gave wrong images in the stability
@@ -92,9 +97,9 @@ void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den) {
 // gets here walks, so what counts is the walk's reads, not what a group that does not walk pays.
 // The root's four corners first (Algorithm 2 L9-L11 at the root, as shadowc_rootNeedsWalk), then
 // one step a ROW of corners: den + 1 reads, the row above carried in `top`, the den cells of the
-// band between them classified left to right (the column walk's order, so every sum and every
-// accumulator is bit-identical). den = 5: 4 + 36 corner reads in 6 steps, against 64 in 31 steps
-// for the column walk below; a group that does not walk pays the first step (the top row, no
+// band between them classified left to right (every cell sum is sat.glsl's four corners in its
+// order). den = 5: 4 + 36 corner reads in 6 steps, against 64 in 31 steps for the row-pair walk
+// below; a group that does not walk pays the first step (the top row, no
 // cells) on top of the root. The inner loop has a constant trip count once den is (the driver
 // unrolls it and `top` stays in registers), hence den <= 8 only.
 void shadowc_uniformBandWalk(int den) {
@@ -167,38 +172,38 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   uint marksLo = 0u;  // bit k = j * den + i (k - 32 in marksHi): sub-kernel (i, j) is non-planar
   uint marksHi = 0u;
 #endif
-  // The carried column: its top and bottom corners in the band, and its x (texel edge).
+  // The carried row: its left and right corners in the band, and its y (texel edge).
   shadowc_WalkSum lo = shadowc_summedCorner(root.x - 1, root.y - 1, 0).xy;
-  shadowc_WalkSum hi = shadowc_summedCorner(root.x - 1, root.y + size.y - 1, 0).xy;
-  int xc = root.x;
+  shadowc_WalkSum hi = shadowc_summedCorner(root.x + size.x - 1, root.y - 1, 0).xy;
+  int yc = root.y;
   bool more = true;
   for (int step = 0; step < 1 + den * (den + 1) && more; ++step) {
-    // Step 0: the root's right column. Step 1 + j * (den + 1) + c: column c of grid band j.
+    // Step 0: the root's bottom row. Step 1 + i * (den + 1) + r: row r of grid band i.
     bool grid = step > 0;
     int g = step - 1;
-    int j = int(uint(g) / uint(den + 1));
-    int c = g - j * (den + 1);
-    int y0 = grid ? root.y + int(uint(j * size.y) / uint(den)) : root.y;
-    int y1 = grid ? root.y + int(uint((j + 1) * size.y) / uint(den)) : root.y + size.y;
-    int xa = grid ? root.x + int(uint(c * size.x) / uint(den)) : root.x + size.x;
-    shadowc_WalkSum la = shadowc_summedCorner(xa - 1, y0 - 1, 0).xy;
-    shadowc_WalkSum ha = shadowc_summedCorner(xa - 1, y1 - 1, 0).xy;
-    shadowc_WalkSum sum = ha - hi - la + lo;  // the cell (carried column, this one)
-    // The cell is there unless this is a band's first column or it is empty (area 0: nothing
-    // added, verdict 0; shadowc_classify). The root as shadowc_rootNeedsWalk, a sub-kernel as
+    int i = int(uint(g) / uint(den + 1));
+    int r = g - i * (den + 1);
+    int x0 = grid ? root.x + int(uint(i * size.x) / uint(den)) : root.x;
+    int x1 = grid ? root.x + int(uint((i + 1) * size.x) / uint(den)) : root.x + size.x;
+    int ya = grid ? root.y + int(uint(r * size.y) / uint(den)) : root.y + size.y;
+    shadowc_WalkSum la = shadowc_summedCorner(x0 - 1, ya - 1, 0).xy;
+    shadowc_WalkSum ha = shadowc_summedCorner(x1 - 1, ya - 1, 0).xy;
+    shadowc_WalkSum sum = ha - la - hi + lo;  // the cell (carried row, this one)
+    // The cell is there unless this is a band's first row or it is empty (area 0: nothing added,
+    // verdict 0; shadowc_classify). The root as shadowc_rootNeedsWalk, a sub-kernel as
     // shadowc_qtAccept.
-    float area = float((xa - xc) * (y1 - y0));
-    bool cell = (!grid || c > 0) && xa > xc && y1 > y0;
+    float area = float((x1 - x0) * (ya - yc));
+    bool cell = (!grid || r > 0) && x1 > x0 && ya > yc;
     bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(area, 1.0)), cell ? area : 0.0,
                                       grid || nonPlanarOnly) == 1;
 #if SHADOWC_WALK_DEFER
-    shadowc_markSet(marksLo, marksHi, g - j - 1, grid && nonPlanar);  // sub-kernel (c - 1, j)
+    shadowc_markSet(marksLo, marksHi, (r - 1) * den + i, grid && nonPlanar);  // sub-kernel (i, r - 1)
 #else
-    if (grid && nonPlanar) shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
+    if (grid && nonPlanar) shadowc_qtResolveLeaf(vec4(x0, yc, x1, ya));
 #endif
     lo = la;
     hi = ha;
-    xc = xa;
+    yc = ya;
     more = grid || nonPlanar;  // the root walks on only when it needs it
   }
 #if SHADOWC_WALK_DEFER

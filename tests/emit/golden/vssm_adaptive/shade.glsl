@@ -441,13 +441,13 @@ void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 69
+#line 74
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 75
-}
 #line 80
+}
+#line 85
 void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den){
   while((marksLo | marksHi)!= 0u){
     int b = shadowc_markPop(marksLo, marksHi);
@@ -455,19 +455,19 @@ void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den){
     shadowc_markResolve(b, shadowc_subBox(ivec3(b - j * den, j, den)));
   }
 }
-#line 151
+#line 156
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
     shadowc_qtLeafBox(whole);
     return;
   }
-#line 208
+#line 213
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
   int subs = den * den;
   const int piece = shadowc_satPiece;
-#line 214
+#line 219
   bool wideSubs = 17 > den && max(size . x, size . y)> piece * den;
 
   uint marksLo = 0u;
@@ -488,7 +488,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 
     ivec4 box = k < 0 || ! wideSubs ? ivec4(root, root + size): ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
     ivec2 cells = max((box . zw - box . xy + piece - 1)/ piece, 1);
-#line 236
+#line 241
     int ncol = grid ? den + 1 : cells . x + 1;
     int cb = min(c + 1, ncol - 1);
     int y0 = grid ? root . y +(j * size . y)/ den : min(box . y + j * piece, box . w);
@@ -517,20 +517,20 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
       c = 0;
       ++ j;
     }
-#line 267
+#line 272
     bool on1 = grid && cell1;
     bool nonPlanar1 = shadowc_classify(shadowc_walkMean(vec2(s1), max(area1, 1.0)), on1 ? area1 : 0.0, true)== 1;
 
     shadowc_markSet(marksLo, marksHi, bit - 1, nonPlanar1);
-#line 275
+#line 280
     float area = grid ? area2 : float((box . z - box . x)*(box . w - box . y));
     bool on2 = grid ? cell2 : bandEnd && j >= cells . y && area > 0.0;
     vec4 m = shadowc_walkMean(grid ? vec2(s2): acc, max(area, 1.0));
-#line 280
+#line 285
     bool nonPlanar = shadowc_classify(m, on2 ? area : 0.0, k >= 0 || nonPlanarOnly)== 1;
 
     shadowc_markSet(marksLo, marksHi, grid ? bit : k, k >= 0 && nonPlanar);
-#line 286
+#line 291
     lo = lb;
     hi = hb;
     xc = xb;
@@ -543,7 +543,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   }
 
   shadowc_uniformResolveMarks(marksLo, marksHi, den);
-#line 305
+#line 310
 }
 #line 184 "lookup/vssm.glsl"
 #line 192

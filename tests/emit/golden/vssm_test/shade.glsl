@@ -355,13 +355,13 @@ void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly){
   return shadowc_classify(m, area, nonPlanarOnly)== 1;
 }
-#line 69
+#line 74
 vec4 shadowc_walkMean(vec2 sum, float area){
 
   return vec4(sum /(65536.0 * area), 0.0, 0.0);
-#line 75
+#line 80
 }
-#line 100
+#line 105
 void shadowc_uniformBandWalk(int den){
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
@@ -373,7 +373,7 @@ void shadowc_uniformBandWalk(int den){
   bool there = size . x > 0 && size . y > 0;
   int rows = shadowc_classify(shadowc_walkMean(vec2(ha - hi - la + lo), max(area, 1.0)), there ? area : 0.0,
                               false)== 1 ? den + 1 : 0;
-#line 115
+#line 120
                 uvec2 top[5 + 1];
   for(int c = 0;c <= den;++ c)top[c]= uvec2(0);
   int yt = root . y;
@@ -390,7 +390,7 @@ void shadowc_uniformBandWalk(int den){
       bool cell = r > 0 && xr > xl && yb > yt;
       bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(cellArea, 1.0)), cell ? cellArea : 0.0,
                                         true)== 1;
-#line 134
+#line 139
       if(nonPlanar)shadowc_qtResolveLeaf(vec4(xl, yt, xr, yb));
 
       top[c - 1]= left;
@@ -400,9 +400,9 @@ void shadowc_uniformBandWalk(int den){
     top[den]= left;
     yt = yb;
   }
-#line 146
-}
 #line 151
+}
+#line 156
 void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   vec4 whole = shadowc_subBox(ivec3(0, 0, 1));
   if(den == 1){
@@ -414,40 +414,40 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
     shadowc_uniformBandWalk(den);
     return;
   }
-#line 164
+#line 169
   ivec2 root = ivec2(shadowc_vRoot . xy);
   ivec2 size = ivec2(shadowc_vRoot . zw)- root;
-#line 171
+#line 176
                 uvec2 lo = shadowc_summedCorner(root . x - 1, root . y - 1, 0). xy;
-                uvec2 hi = shadowc_summedCorner(root . x - 1, root . y + size . y - 1, 0). xy;
-  int xc = root . x;
+                uvec2 hi = shadowc_summedCorner(root . x + size . x - 1, root . y - 1, 0). xy;
+  int yc = root . y;
   bool more = true;
   for(int step = 0;step < 1 + den *(den + 1)&& more;++ step){
 
     bool grid = step > 0;
     int g = step - 1;
-    int j = int(uint(g)/ uint(den + 1));
-    int c = g - j *(den + 1);
-    int y0 = grid ? root . y + int(uint(j * size . y)/ uint(den)): root . y;
-    int y1 = grid ? root . y + int(uint((j + 1)* size . y)/ uint(den)): root . y + size . y;
-    int xa = grid ? root . x + int(uint(c * size . x)/ uint(den)): root . x + size . x;
-                  uvec2 la = shadowc_summedCorner(xa - 1, y0 - 1, 0). xy;
-                  uvec2 ha = shadowc_summedCorner(xa - 1, y1 - 1, 0). xy;
-                  uvec2 sum = ha - hi - la + lo;
-#line 190
-    float area = float((xa - xc)*(y1 - y0));
-    bool cell =(! grid || c > 0)&& xa > xc && y1 > y0;
+    int i = int(uint(g)/ uint(den + 1));
+    int r = g - i *(den + 1);
+    int x0 = grid ? root . x + int(uint(i * size . x)/ uint(den)): root . x;
+    int x1 = grid ? root . x + int(uint((i + 1)* size . x)/ uint(den)): root . x + size . x;
+    int ya = grid ? root . y + int(uint(r * size . y)/ uint(den)): root . y + size . y;
+                  uvec2 la = shadowc_summedCorner(x0 - 1, ya - 1, 0). xy;
+                  uvec2 ha = shadowc_summedCorner(x1 - 1, ya - 1, 0). xy;
+                  uvec2 sum = ha - la - hi + lo;
+#line 195
+    float area = float((x1 - x0)*(ya - yc));
+    bool cell =(! grid || r > 0)&& x1 > x0 && ya > yc;
     bool nonPlanar = shadowc_classify(shadowc_walkMean(vec2(sum), max(area, 1.0)), cell ? area : 0.0,
                                       grid || nonPlanarOnly)== 1;
-#line 197
-    if(grid && nonPlanar)shadowc_qtResolveLeaf(vec4(xc, y0, xa, y1));
+#line 202
+    if(grid && nonPlanar)shadowc_qtResolveLeaf(vec4(x0, yc, x1, ya));
 
     lo = la;
     hi = ha;
-    xc = xa;
+    yc = ya;
     more = grid || nonPlanar;
   }
-#line 305
+#line 310
 }
 #line 184 "lookup/vssm.glsl"
 #line 192
