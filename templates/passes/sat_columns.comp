@@ -18,7 +18,16 @@ void main() {
   if (x >= size.x) return;
   for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
     SHADOWC_SAT_VALUE sum = SHADOWC_SAT_VALUE(0);
-    for (int y = 0; y < size.y; ++y) {
+    int y = 0;
+    for (; y + SHADOWC_SAT_BATCH <= size.y; y += SHADOWC_SAT_BATCH) {
+      SHADOWC_SAT_VALUE v[SHADOWC_SAT_BATCH];  // read before any is written (sat_common.glsl)
+      for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) v[i] = imageLoad(sat, ivec3(x, y + i, layer));
+      for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) {
+        sum += v[i];
+        imageStore(sat, ivec3(x, y + i, layer), sum);
+      }
+    }
+    for (; y < size.y; ++y) {  // the rest, fewer than a batch
       sum += imageLoad(sat, ivec3(x, y, layer));
       imageStore(sat, ivec3(x, y, layer), sum);
     }

@@ -49,7 +49,17 @@ void main() {
   // x outer, layers inner: each depth texel is read once for all layers.
   SHADOWC_SAT_VALUE sum[SHADOWC_LAYERS];
   for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) sum[layer] = SHADOWC_SAT_VALUE(0);
-  for (int x = 0; x < size.x; ++x) {
+  int x = 0;
+  for (; x + SHADOWC_SAT_BATCH <= size.x; x += SHADOWC_SAT_BATCH) {
+    float d[SHADOWC_SAT_BATCH];  // read before any is written (sat_common.glsl)
+    for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) d[i] = texelFetch(shadowDepth, ivec2(x + i, y), 0).r;
+    for (int i = 0; i < SHADOWC_SAT_BATCH; ++i)
+      for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
+        sum[layer] += shadowc_satEncode(shadowc_layerMoments(d[i], layer));
+        imageStore(satOut, ivec3(x + i, y, layer), sum[layer]);
+      }
+  }
+  for (; x < size.x; ++x) {  // the rest, fewer than a batch
     const float d = texelFetch(shadowDepth, ivec2(x, y), 0).r;
     for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
       sum[layer] += shadowc_satEncode(shadowc_layerMoments(d, layer));
@@ -59,7 +69,16 @@ void main() {
 #else
   for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
     SHADOWC_SAT_VALUE sum = SHADOWC_SAT_VALUE(0);
-    for (int x = 0; x < size.x; ++x) {
+    int x = 0;
+    for (; x + SHADOWC_SAT_BATCH <= size.x; x += SHADOWC_SAT_BATCH) {
+      vec4 m[SHADOWC_SAT_BATCH];  // read before any is written (sat_common.glsl)
+      for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) m[i] = imageLoad(momentsIn, ivec3(x + i, y, layer));
+      for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) {
+        sum += shadowc_satEncode(m[i]);
+        imageStore(satOut, ivec3(x + i, y, layer), sum);
+      }
+    }
+    for (; x < size.x; ++x) {  // the rest, fewer than a batch
       sum += shadowc_satEncode(imageLoad(momentsIn, ivec3(x, y, layer)));
       imageStore(satOut, ivec3(x, y, layer), sum);
     }

@@ -52,13 +52,13 @@ std::vector<float> linearMoments(const std::vector<float>& depth) {
   return m;
 }
 
-SatRun runSatPasses(rt::VulkanContext& ctx, const CompiledFilter& cf) {
+SatRun runSatPasses(rt::VulkanContext& ctx, const CompiledFilter& cf, uint32_t map = kMap) {
   const auto g = craftGBuffer({}, 8, 8);
   rt::RunOptions options;
   options.downloads = {"sat"};
-  const std::vector<float> depth = craftedDepth(kMap);
+  const std::vector<float> depth = craftedDepth(map);
   rt::RunOutputs out =
-      rt::runPasses(ctx, cf.passes, craftedInputs(kMap, 8, 8, identityFrame(kMap, 8, 8, 0.5f), depth, g), options);
+      rt::runPasses(ctx, cf.passes, craftedInputs(map, 8, 8, identityFrame(map, 8, 8, 0.5f), depth, g), options);
   return {linearMoments(depth), std::move(out.images.at("sat"))};
 }
 
@@ -96,6 +96,49 @@ TEST_F(ClosedFormSatTest, Int32SatEqualsCpuIntegerSumsExactly) {
   // The table was built by the fused prefilter: no moments pass ran (issue 10).
   EXPECT_FALSE(hasPass(*cf, "moments"));
   EXPECT_TRUE(hasPass(*cf, "sat_rows"));
+}
+
+// (a') The scans read a batch of texels before writing them (sat_common.glsl SHADOWC_SAT_BATCH)
+// and finish a row or column that is not a whole number of batches one texel at a time: on a
+// 509^2 map (prime: 63 batches of 8 and 5 left over on both axes) the table is still exact,
+// fused (the row scan warps the depth) and unfused (`mips on` keeps the moments image, which
+// the row scan then reads).
+constexpr uint32_t kOddMap = 509;
+
+std::string unfusedInt32Source() {
+  std::string text = sampleSource("vssm_int32_sat");
+  const std::string storage = "storage   sat(int32)\n";
+  const size_t at = text.find(storage);
+  if (at == std::string::npos) return {};
+  return text.insert(at + storage.size(), "    mips      on\n");
+}
+
+TEST_F(ClosedFormSatTest, Int32SatIsExactOnAMapThatIsNotAWholeNumberOfScanBatches) {
+  for (const bool fused : {true, false}) {
+    SCOPED_TRACE(fused ? "fused" : "unfused");
+    const CompiledFilter* cf = fused ? compileFilterCached("vssm_int32_sat", sampleSource("vssm_int32_sat"))
+                                     : compileFilterCached("vssm_int32_sat_unfused", unfusedInt32Source());
+    ASSERT_NE(cf, nullptr);
+    EXPECT_EQ(hasPass(*cf, "moments"), !fused);
+    const SatRun run = runSatPasses(context(), *cf, kOddMap);
+    ASSERT_EQ(run.sat.width, kOddMap);
+    const rt::cpu::SatU32 ref = rt::cpu::buildSatU32(rt::cpu::ImageView{run.moments.data(), kOddMap, kOddMap, 2});
+    EXPECT_TRUE(satEquals(run.sat, ref));
+  }
+}
+
+// Sibling: a table whose scans stopped after the last whole batch (the 5 texels left over in
+// each row and column never summed) is caught by the same comparison.
+TEST_F(ClosedFormSatTest, Int32SatComparisonCatchesARemainderLeftOutOfTheScans) {
+  const CompiledFilter* cf = compileFilterCached("vssm_int32_sat", sampleSource("vssm_int32_sat"));
+  ASSERT_NE(cf, nullptr);
+  const SatRun run = runSatPasses(context(), *cf, kOddMap);
+  std::vector<float> cut = run.moments;
+  const uint32_t whole = kOddMap / 8 * 8;
+  for (uint32_t y = 0; y < kOddMap; ++y)
+    for (uint32_t x = 0; x < kOddMap; ++x)
+      if (x >= whole || y >= whole) cut[(size_t(y) * kOddMap + x) * 2] = cut[(size_t(y) * kOddMap + x) * 2 + 1] = 0.0f;
+  EXPECT_FALSE(satEquals(run.sat, rt::cpu::buildSatU32(rt::cpu::ImageView{cut.data(), kOddMap, kOddMap, 2})));
 }
 
 // Sibling: the moments rounded to 2^-11 steps before the sum (what storing them in a coarser

@@ -38,12 +38,22 @@ void main(){
 #line 50
                   uvec4 sum[1];
   for(int layer = 0;layer < 1;++ layer)sum[layer]= uvec4(0);
-  for(int x = 0;x < size . x;++ x){
+  int x = 0;
+  for(;x + 8 <= size . x;x += 8){
+    float d[8];
+    for(int i = 0;i < 8;++ i)d[i]= texelFetch(shadowDepth, ivec2(x + i, y), 0). r;
+    for(int i = 0;i < 8;++ i)
+      for(int layer = 0;layer < 1;++ layer){
+        sum[layer]+= shadowc_satEncode(shadowc_layerMoments(d[i], layer));
+        imageStore(satOut, ivec3(x + i, y, layer), sum[layer]);
+      }
+  }
+  for(;x < size . x;++ x){
     const float d = texelFetch(shadowDepth, ivec2(x, y), 0). r;
     for(int layer = 0;layer < 1;++ layer){
       sum[layer]+= shadowc_satEncode(shadowc_layerMoments(d, layer));
       imageStore(satOut, ivec3(x, y, layer), sum[layer]);
     }
   }
-#line 68
+#line 87
 }

@@ -14,7 +14,16 @@ void main(){
   if(x >= size . x)return;
   for(int layer = 0;layer < 1;++ layer){
                     uvec4 sum = uvec4(0);
-    for(int y = 0;y < size . y;++ y){
+    int y = 0;
+    for(;y + 8 <= size . y;y += 8){
+                      uvec4 v[8];
+      for(int i = 0;i < 8;++ i)v[i]= imageLoad(sat, ivec3(x, y + i, layer));
+      for(int i = 0;i < 8;++ i){
+        sum += v[i];
+        imageStore(sat, ivec3(x, y + i, layer), sum);
+      }
+    }
+    for(;y < size . y;++ y){
       sum += imageLoad(sat, ivec3(x, y, layer));
       imageStore(sat, ivec3(x, y, layer), sum);
     }
