@@ -130,9 +130,10 @@ def light_section(res, seconds):
     return "\n".join(out) + "\n"
 
 
-def study_section(res, seconds):
+def study_section(res, seconds, gpu_file=None):
     """Issue 10 item 5: per variant and map, frame ms / RMSE per light and largest ÷ smallest; at the
-    largest light the passes of every variant, VSSM's shade and frame against PCSS's."""
+    largest light the passes of every variant, VSSM's shade and frame against PCSS's. With `gpu_file`
+    the rows are a stored run on a lent GPU (bench/results/), not one made here."""
     rows = res["rows"]
     r0 = rows[0]
     lights = first_seen(rows, "scene")
@@ -141,29 +142,40 @@ def study_section(res, seconds):
     cell = {(r["variant"], r["scene"], r["map"]): r for r in rows}
     shade = lambda r: sum(p["median_ms"] for p in r["passes"] if p["kind"] == "shade")
     took = " in {:.0f} s wall".format(seconds) if seconds else ""
-    out = ["## Light-size study (bench/sweeps/light_size_study.json through `shadowc sweep`)\n", "",
-           ("`scripts/perf_sweeps.py --only study` ran `shadowc sweep bench/sweeps/light_size_study.json`{} ({} rows: "
-            "{} ran, {} cached), {} UTC, device {}, {} cores, load average {} at the end. two_planes under five light "
-            "widths (world units: 0.02 is nearly a point, 4 the largest, as in samples/sweeps/light_size.json), {}² screen, "
-            "{} maps, {} warm-up + median of {} timed runs; RMSE against the Embree reference ({}×{} light samples). "
-            "Frame = median GPU frame total. Variants: `pcss[search, taps]` = samples/filters/pcss_poisson.shadow "
-            "with `max: 255`; `vssm_fallback[sub]` = vssm_pcf_fallback.shadow (quadtree H = 2, PCF 2×2) with its "
-            "5×5 blocker subdivided `always` or only where `nonplanar`; `vssm_mixed[sub]` = m = 5 / H = 3; "
-            "`vssm_h3` = H = 3 for both; `eo` = `early_out none` or `minmax` (the min-max HSM of Algorithm 1 "
-            "L4 and L8-L10: lit and umbra receivers return before the blocker search); `pcf16`, `vsm` the plain "
-            "baselines. Under load single frame times move "
-            "by ±30 %: read ratios.").format(
-               took, len(rows), res["stats"]["ran"], res["stats"]["cached"],
-               datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M"), r0["device"], os.cpu_count(), load_average(),
-               r0["screen"], " and ".join("{}²".format(m) for m in maps), r0["warmup"], r0["runs"],
-               r0["reference_samples"], r0["reference_samples"]), ""]
+    # Milliseconds: whole ones on lavapipe, where a frame takes tens; a GPU's take a fraction of one.
+    ms0 = (lambda v: "{:.2f}".format(v)) if gpu_file else (lambda v: "{:.0f}".format(v))
+    ms1 = (lambda v: "{:.3f}".format(v)) if gpu_file else (lambda v: "{:.1f}".format(v))
+    if gpu_file:
+        title = "## Light-size study on a GPU ({} through `shadowc sweep --device`)\n".format(gpu_file)
+        ran = ("`scripts/perf_sweeps.py --only gpu` rendered {} ({} rows), stored from the lent device: {}. "
+               "two_planes under five light ").format(gpu_file, len(rows), res["note"])
+    else:
+        title = "## Light-size study (bench/sweeps/light_size_study.json through `shadowc sweep`)\n"
+        ran = ("`scripts/perf_sweeps.py --only study` ran `shadowc sweep bench/sweeps/light_size_study.json`{} ({} rows: "
+               "{} ran, {} cached), {} UTC, device {}, {} cores, load average {} at the end. two_planes under five light "
+               ).format(took, len(rows), res["stats"]["ran"], res["stats"]["cached"],
+                        datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M"), r0["device"], os.cpu_count(), load_average())
+    about = ("widths (world units: 0.02 is nearly a point, 4 the largest, as in samples/sweeps/light_size.json), {}² "
+             "screen, {} maps, {} warm-up + median of {} timed runs; RMSE against the Embree reference ({}×{} light "
+             "samples). Frame = median GPU frame total. Variants: `pcss[search, taps]` = "
+             "samples/filters/pcss_poisson.shadow with `max: 255`; `vssm_fallback[sub]` = vssm_pcf_fallback.shadow "
+             "(quadtree H = 2, PCF 2×2) with its 5×5 blocker subdivided `always` or only where `nonplanar`; "
+             "`vssm_mixed[sub]` = m = 5 / H = 3; `vssm_h3` = H = 3 for both; `eo` = `early_out none` or `minmax` (the "
+             "min-max HSM of Algorithm 1 L4 and L8-L10: lit and umbra receivers return before the blocker search); "
+             "`pcf16`, `vsm` the plain baselines. ").format(
+                 r0["screen"], " and ".join("{}²".format(m) for m in maps), r0["warmup"], r0["runs"],
+                 r0["reference_samples"], r0["reference_samples"])
+    noise = ("Frames of a few tenths of a millisecond move with the GPU's clocks (a row can run at a lower clock "
+             "than its neighbours): read ratios." if gpu_file else
+             "Under load single frame times move by ±30 %: read ratios.")
+    out = [title, "", ran + about + noise, ""]
     for m in maps:
         out += ["**{}² map: frame ms / RMSE**".format(m), "",
                 "| variant | " + " | ".join("light {}".format(l.replace("light_", "")) for l in lights) +
                 " | largest ÷ smallest frame |", "|---|" + "---:|" * (len(lights) + 1)]
         for v in variants:
             cells = [cell.get((v, l, m)) for l in lights]
-            text = ["{:.0f} / {:.4f}".format(c["total_ms"], c["metrics"]["rmse"]) if c else "–" for c in cells]
+            text = ["{} / {:.4f}".format(ms0(c["total_ms"]), c["metrics"]["rmse"]) if c else "–" for c in cells]
             ratio = cells[-1]["total_ms"] / cells[0]["total_ms"] if cells[0] and cells[-1] else float("nan")
             out.append("| {} | {} | {:.2f} |".format(v, " | ".join(text), ratio))
         out.append("")
@@ -174,9 +186,9 @@ def study_section(res, seconds):
         for v in variants:
             c = cell.get((v, big, m))
             if c:
-                passes = ", ".join("{} {:.1f}".format(p["name"], p["median_ms"]) for p in c["passes"])
-                out.append("| {} | {} | {} | {:.1f} | {:.1f} | {:.4f} |".format(v, m, passes, shade(c), c["total_ms"],
-                                                                               c["metrics"]["rmse"]))
+                passes = ", ".join("{} {}".format(p["name"], ms1(p["median_ms"])) for p in c["passes"])
+                out.append("| {} | {} | {} | {} | {} | {:.4f} |".format(v, m, passes, ms1(shade(c)), ms1(c["total_ms"]),
+                                                                        c["metrics"]["rmse"]))
     out += ["", "**Ratios at the largest light** (issue 10's done-whens; PCSS-16 = `pcss[search=16,taps=16]`)", ""]
     for m in maps:
         pcss16 = cell.get(("pcss[search=16,taps=16]", big, m))
@@ -195,9 +207,9 @@ def study_section(res, seconds):
             else:
                 best = min(pcss, key=lambda p: p["metrics"]["rmse"]) if pcss else None
                 if best:
-                    line += ("; no PCSS variant reaches its RMSE (best {} {:.4f} at {:.0f} ms; VSSM {:.0f} ms, "
-                             "{:.2f}× that frame)").format(best["variant"], best["metrics"]["rmse"], best["total_ms"],
-                                                           c["total_ms"], c["total_ms"] / best["total_ms"])
+                    line += ("; no PCSS variant reaches its RMSE (best {} {:.4f} at {} ms; VSSM {} ms, "
+                             "{:.2f}× that frame)").format(best["variant"], best["metrics"]["rmse"], ms0(best["total_ms"]),
+                                                           ms0(c["total_ms"]), c["total_ms"] / best["total_ms"])
             out.append(line)
         # The paper's mixed scheme against H = 3 alone (sec. 6.3, Fig. 6: 117 against 94 fps), same early out.
         for v in variants:
@@ -208,6 +220,27 @@ def study_section(res, seconds):
             if c and d:
                 out.append("- {}² map, {} frame ÷ {} frame {:.2f} (shade {:.2f})".format(
                     m, v, h3, c["total_ms"] / d["total_ms"], shade(c) / shade(d)))
+    return "\n".join(out) + "\n"
+
+
+def gpu_sat_section(before, after, before_file):
+    """The SAT scans on the GPU one texel at a time (`before`) and batched (`after`): per map, the
+    VSSM variants' SAT passes and frame at the largest light."""
+    rows = after["rows"]
+    big = first_seen(rows, "scene")[-1]
+    old = {(r["variant"], r["scene"], r["map"]): r for r in before["rows"]}
+    sat = lambda r: sum(p["median_ms"] for p in r["passes"] if p["kind"] == "sat")
+    out = ["", "**The SAT scans batched** (sat_common.glsl `SHADOWC_SAT_BATCH`) against one texel at a time "
+           "({}), at the largest light; sat = rows + columns, ms:".format(before_file), "",
+           "| variant | map | sat before | sat now | frame before | frame now | RMSE equal |",
+           "|---|---:|---:|---:|---:|---:|---|"]
+    for r in rows:
+        o = old.get((r["variant"], r["scene"], r["map"]))
+        if r["scene"] != big or not o or sat(r) == 0:
+            continue
+        out.append("| {} | {} | {:.3f} | {:.3f} | {:.3f} | {:.3f} | {} |".format(
+            r["variant"], r["map"], sat(o), sat(r), o["total_ms"], r["total_ms"],
+            "yes" if o["metrics"]["rmse"] == r["metrics"]["rmse"] else "no"))
     return "\n".join(out) + "\n"
 
 
@@ -274,7 +307,9 @@ def main():
     ap.add_argument("--out", default="/tmp/perf_sweeps")
     ap.add_argument("--reuse", action="store_true")
     ap.add_argument("--light-bench", default=os.path.join(ROOT, "build", "bench", "light_bench"))
-    ap.add_argument("--only", choices=["generic", "light_size", "study", "ratio"])
+    ap.add_argument("--only", choices=["generic", "light_size", "study", "ratio", "gpu"])
+    ap.add_argument("--gpu-results", default="bench/results/h200_light_size_study.json",
+                    help="a light-size study run stored from a lent GPU (--only gpu; not part of a full run)")
     a = ap.parse_args()
     # Run every sweep first and read the doc only then, so that edits made to it while the sweeps
     # run (minutes) are kept; the doc is replaced atomically.
@@ -290,6 +325,15 @@ def main():
         sections.append(("study", study_section(res, seconds) + "\n" + study_plot(res)))
     if a.only in (None, "ratio"):
         sections.append(("ratio", ratio_section(a.light_bench)))
+    if a.only == "gpu":  # a stored run: nothing here measures it again
+        with open(os.path.join(ROOT, a.gpu_results)) as f:
+            after = json.load(f)
+        body = study_section(after, None, a.gpu_results)
+        before_file = a.gpu_results.replace(".json", "_serial_sat.json")
+        if os.path.exists(os.path.join(ROOT, before_file)):
+            with open(os.path.join(ROOT, before_file)) as f:
+                body += gpu_sat_section(json.load(f), after, before_file)
+        sections.append(("gpu", body))
     with open(DOC) as f:
         text = f.read()
     for tag, body in sections:
