@@ -1,11 +1,13 @@
 #include "manifest/manifest.h"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
 #include <sstream>
+#include <string>
 #include <type_traits>
 #include <utility>
 
@@ -64,19 +66,37 @@ const nlohmann::json& field(const nlohmann::json& j, const char* name) {
 }
 
 template <typename T>
+struct IsIntegerArray : std::false_type {};
+template <typename T, size_t N>
+struct IsIntegerArray<std::array<T, N>> : std::bool_constant<std::is_integral_v<T> && !std::is_same_v<T, bool>> {};
+
+// A JSON integer that fits T (`wrong` names the field): nlohmann's get<T> would cast anything
+// else, and a float cast out of range is undefined behaviour (fuzz_manifest found a 49-digit
+// "shift", and later a huge float in "local_size").
+template <typename T, typename Wrong>
+T integer(const nlohmann::json& v, const Wrong& wrong) {
+  if (!v.is_number_integer()) throw wrong("has the wrong type (an integer is expected)");
+  const bool fits = v.is_number_unsigned() ? std::in_range<T>(v.get<uint64_t>()) : std::in_range<T>(v.get<int64_t>());
+  if (!fits) throw wrong("is out of range");
+  return v.get<T>();
+}
+
+template <typename T>
 T get(const nlohmann::json& j, const char* name) {
   const nlohmann::json& v = field(j, name);
   const auto wrong = [&](const char* why) {
     return ManifestError(std::string("manifest: field '") + name + "' " + why);
   };
-  // An integer field must hold a JSON integer that fits T: nlohmann's get<T> would cast anything
-  // else, and a float cast out of range is undefined behaviour (fuzz_manifest found a 49-digit
-  // "shift"). Doubles (the only floating fields) cannot overflow a double.
+  // Integer fields and arrays of them go through integer(); doubles (the only floating fields)
+  // cannot overflow a double.
   if constexpr (std::is_integral_v<T> && !std::is_same_v<T, bool>) {
-    if (!v.is_number_integer()) throw wrong("has the wrong type (an integer is expected)");
-    const bool fits = v.is_number_unsigned() ? std::in_range<T>(v.get<uint64_t>()) : std::in_range<T>(v.get<int64_t>());
-    if (!fits) throw wrong("is out of range");
-    return v.get<T>();
+    return integer<T>(v, wrong);
+  } else if constexpr (IsIntegerArray<T>::value) {
+    T out{};
+    if (!v.is_array() || v.size() != out.size())
+      throw wrong(("has the wrong type (an array of " + std::to_string(out.size()) + " integers is expected)").c_str());
+    for (size_t i = 0; i < out.size(); ++i) out[i] = integer<typename T::value_type>(v[i], wrong);
+    return out;
   } else {
     try {
       return v.get<T>();

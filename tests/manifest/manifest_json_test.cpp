@@ -97,5 +97,30 @@ TEST(ManifestJson, ANumberThatDoesNotFitItsFieldIsOneClearError) {
   EXPECT_NO_THROW(manifestFromJson(j));
 }
 
+// The same for an array of integers (fuzz_manifest found a huge float in "local_size";
+// tests/fuzz/corpus/manifest/regression_local_size_float.json).
+TEST(ManifestJson, ALocalSizeThatIsNotThreeFittingIntegersIsOneClearError) {
+  nlohmann::json j = toJson(planned(test::pcfSpec()));
+  ASSERT_TRUE(j["passes"][0].contains("local_size"));
+  const std::pair<nlohmann::json, const char*> cases[] = {
+      {nlohmann::json::array({8, 4.4e48, 1}), "'local_size' has the wrong type (an integer"},
+      {nlohmann::json::array({8, uint64_t(1) << 40, 1}), "'local_size' is out of range"},
+      {nlohmann::json::array({8, -1, 1}), "'local_size' is out of range"},
+      {nlohmann::json::array({8, 8}), "'local_size' has the wrong type (an array of 3 integers"},
+      {nlohmann::json(8), "'local_size' has the wrong type (an array of 3 integers"},
+  };
+  for (const auto& [bad, message] : cases) {
+    j["passes"][0]["local_size"] = bad;
+    try {
+      manifestFromJson(j);
+      FAIL() << bad.dump();
+    } catch (const ManifestError& e) {
+      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << bad.dump() << ": " << e.what();
+    }
+  }
+  j["passes"][0]["local_size"] = nlohmann::json::array({8, 8, 1});  // the sibling: three integers are read
+  EXPECT_NO_THROW(manifestFromJson(j));
+}
+
 }  // namespace
 }  // namespace shadowc
