@@ -105,19 +105,12 @@ TEST_F(ClosedFormSatTest, Int32SatEqualsCpuIntegerSumsExactly) {
 // the row scan then reads).
 constexpr uint32_t kOddMap = 509;
 
-std::string unfusedInt32Source() {
-  std::string text = sampleSource("vssm_int32_sat");
-  const std::string storage = "storage   sat(int32)\n";
-  const size_t at = text.find(storage);
-  if (at == std::string::npos) return {};
-  return text.insert(at + storage.size(), "    mips      on\n");
-}
-
 TEST_F(ClosedFormSatTest, Int32SatIsExactOnAMapThatIsNotAWholeNumberOfScanBatches) {
   for (const bool fused : {true, false}) {
     SCOPED_TRACE(fused ? "fused" : "unfused");
     const CompiledFilter* cf = fused ? compileFilterCached("vssm_int32_sat", sampleSource("vssm_int32_sat"))
-                                     : compileFilterCached("vssm_int32_sat_unfused", unfusedInt32Source());
+                                     : compileFilterCached("vssm_int32_sat_unfused",
+                                                           withSetting(sampleSource("vssm_int32_sat"), "mips", "on"));
     ASSERT_NE(cf, nullptr);
     EXPECT_EQ(hasPass(*cf, "moments"), !fused);
     const SatRun run = runSatPasses(context(), *cf, kOddMap);
