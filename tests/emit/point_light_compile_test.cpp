@@ -1,5 +1,4 @@
-// Every sample filter family that can filter a cube map compiles for a point light (issue 14
-// item 4): each samples/filters/*.shadow with its `light` line replaced by
+// Every sample filter family that can filter a cube map compiles for a point light: each samples/filters/*.shadow with its `light` line replaced by
 // `light point(radius: 0.15)` either compiles (every SPIR-V module passes spirv-val, the shade
 // GLSL takes frame_cube.glsl's atlas light space, the manifest says "point") or is refused with
 // E0450 — and which of the two is decided here from the spot sample's spec (a SAT, the min-max
