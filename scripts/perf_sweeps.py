@@ -292,7 +292,7 @@ def shortest(text, tag, column, keep):
     refused = ["| {} | does not compile | | {} | | |".format(r.split("|")[1].strip(), " ".join(re.findall(r"\[[EW][0-9]+\]", r)))
                for r in lines[i + 2:j] if not number(r)]
     rest = measured[keep:]
-    note = ("", "The {} rows at the largest {} shown; the other {} at most {} (every row: "
+    note = ("", "Shown: the {} rows with the largest `{}`; the other {} at most {} (every row: "
             "bench/results/lavapipe_{}.md).".format(keep, column, len(rest), number(rest[0]).group(), tag)) if rest else ()
     return "\n".join(lines[:i + 2] + measured[:keep] + refused + list(note) + lines[j:]) + "\n"
 
