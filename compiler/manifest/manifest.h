@@ -1,5 +1,6 @@
-// The manifest: the contract between the compiler and the runtime. The runtime executes what is listed here and knows nothing about the
-// technique behind it. Serialized as manifest.json; see docs/manifest.md for the schema.
+// The manifest: the contract between the compiler and the runtime. The runtime executes what
+// is listed here and knows nothing about the technique behind it. Serialized as manifest.json; see docs/manifest.md for
+// the schema.
 #pragma once
 
 #include <array>
