@@ -9,8 +9,8 @@
 // (rt::timeInterleaved: both warmed up, then round after round one timed frame of each), so that
 // both cells of the ratio see the same minute. Per variant and map it prints both medians, their
 // ratio, the median and range of the per-round ratios, and the shade pass's ratio; then, at the
-// largest light, every variant in turn against the first (the study's PCSS-16): issue 10's
-// "VSSM shade ≤ 2× PCSS-16" from the same minutes.
+// largest light, every variant in turn against the first (the study's PCSS-16): the
+// "VSSM shade ≤ 2× PCSS-16" ratio from the same minutes.
 //
 // Usage: light_bench [sweep.json] [rounds] [variant-substring]
 //   defaults: bench/sweeps/light_size_study.json, 15 rounds after the sweep's warm-ups, every
@@ -152,7 +152,7 @@ int main(int argc, char** argv) try {
     fmt::print("\n");
 
     // At the largest light, every variant in turn, against the first (the study's PCSS-16): the
-    // shade and frame ratios of issue 10 from the same minutes, as the light ratio above.
+    // shade and frame ratios from the same minutes, as the light ratio above.
     std::vector<const Compiled*> fit;
     for (const Compiled& v : variants)
       if (int(map) <= v.mapSize) fit.push_back(&v);

@@ -1,11 +1,11 @@
 // pass_bench: every prefilter pass kind against the device's copy limit, and each lookup's shade
 // cost per pixel (a benchmark, never a test: it prints medians, nothing here can fail CI).
 //
-// lavapipe is bound by per-texel image load/store, not by memory (FACTS.md "The copy limit"),
-// so a pass is measured against a plain compute copy of an image of the same size and format,
-// timed in the same process on the same device (the anchor); the tables print ratios.
-// Every filter is compiled by the driver and run through the run harness (warm-up, then the
-// median of the timed runs); the copies are a hand-built manifest run the same way.
+// lavapipe is bound by per-texel image load/store, not by memory (docs/performance.md
+// "Prefilter passes against the copy limit"), so a pass is measured against a plain compute copy of an image of the
+// same size and format, timed in the same process on the same device (the anchor); the tables print ratios. Every
+// filter is compiled by the driver and run through the run harness (warm-up, then the median of the timed runs); the
+// copies are a hand-built manifest run the same way.
 //
 // Usage: pass_bench [runs] [sample-substrings, '|'-separated] [map sizes, comma separated] [filter folders, comma
 // separated] [scene] [screen]

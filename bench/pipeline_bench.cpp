@@ -4,9 +4,9 @@
 //   - the driver's in-process compile at -O (driver::compileSource, median of N),
 //   - lavapipe's pipeline creation through the run harness (RunOutputs::pipelineCreateMs), and
 //     each pass's first dispatch, which is where lavapipe JIT-compiles the shader with LLVM
-//     (FACTS.md): one run, no warm-up, 64^2 screen, 512^2 map, two_planes.
+//     (docs/runtime.md "Timing method"): one run, no warm-up, 64^2 screen, 512^2 map, two_planes.
 // Each filter runs on the device in a child process with a time limit, because a too-large
-// shader makes the JIT take minutes (issue 10): a child over the limit is killed and reported.
+// shader makes the JIT take minutes: a child over the limit is killed and reported.
 // Run with MESA_SHADER_CACHE_DISABLE=true so that every pipeline is really compiled.
 // Usage: pipeline_bench [limit seconds = 30] [filter-substring] [compile runs = 3]
 #include <fmt/core.h>

@@ -1,5 +1,5 @@
 // `shadowc compile FILE.shadow -o DIR`: the compiler driver (driver/driver.h), then an atomic write.
-// glslc-style flags (STYLE.md): -O / -O0, -M / -MD, -Werror; see docs/cli.md.
+// glslc-style flags: -O / -O0, -M / -MD, -Werror; see docs/cli.md.
 #include <fmt/core.h>
 
 #include <algorithm>

@@ -2,7 +2,7 @@
 // quadtree kernel with PCF fallback, vssm-yang2010 Algorithm 2; embedded in the binary) and
 // validates it on a built-in scene: per-pass times, error against the Embree reference, images
 // in out/demo/. The sample takes its light width from the scene (`area(size: scene)`), so the
-// filter and the ray-traced reference see the same light; DESIGN.md's vssm_adaptive example folds
+// filter and the ray-traced reference see the same light; samples/filters/vssm_adaptive.shadow folds
 // a 0.04-wide light and would be compared against a different light.
 // It ends with a small trade-off table (cheap PCF to VSSM on the same scene, through the sweep
 // library: docs/sweep.md), so the first thing a newcomer sees is what accuracy costs in time.

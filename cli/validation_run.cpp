@@ -68,7 +68,7 @@ SpecFacts specFacts(const Manifest& manifest) {
 
 void progress(const char* what) { fmt::print(stderr, "shadowc: {}\n", what); }
 
-// Where a penumbra-sized kernel's `max` cuts the scene (issue 9 item 2: a cap must not truncate
+// Where a penumbra-sized kernel's `max` cuts the scene (a cap must not truncate
 // silently): the scene analysis's penumbra widths (planning/scene_analysis.h, the PCSS form over
 // its own blocker search, with the scene's light) against the filter's max. The shaders clamp the
 // blocker search region and the kernel to max (templates/lookup/kernel.glsl).

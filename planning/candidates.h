@@ -1,5 +1,5 @@
-// The candidate builder: the variants the planner chooses among, each one a point in DESIGN.md's
-// space built as a FilterSpec (candidateSpec) and written as an ordinary filter description by
+// The candidate builder: the variants the planner chooses among, each one a point in the filter
+// space (docs/dsl.md) built as a FilterSpec (candidateSpec) and written as an ordinary filter description by
 // the one spec printer (spec/print_filter.h) with the plan's comments. Calibration and
 // confirmation compile exactly these specs (driver::compileSpec).
 #pragma once

@@ -74,7 +74,7 @@ def filter_entry(path, light_type):
     return entry
 
 
-# Issue 9's RMSE bounds for the best VSSM sample with PCF fallback (256^2 screen, 1024^2 map, 16^2 reference).
+# The target RMSE bounds for the best VSSM sample with PCF fallback (256^2 screen, 1024^2 map, 16^2 reference).
 TARGETS = [("two_planes", 0.03), ("large_penumbra", 0.03), ("small_penumbra", 0.03), ("thin_occluders", 0.03),
            ("contact", 0.05), ("overlapping_occluders", 0.05), ("duck", 0.05), ("mesh", 0.05), ("spider", 0.05),
            ("engine", 0.05)]
@@ -212,7 +212,7 @@ def section(res, folder, seconds, a, doc_dir):
     out += table("RMSE against the reference (bold: the worst row of the scene, its error image below):", "rmse",
                  "{:.4f}", True)
     out += table("Over-darkening (acne): fraction of the pixels whose reference is > 0.95 that the filter darkens "
-                 "below 0.8 (issue 9's bound on the curved meshes: ≤ 0.005):", "over_darkening", "{:.4f}", False)
+                 "below 0.8 (the target bound on the curved meshes: ≤ 0.005):", "over_darkening", "{:.4f}", False)
     out += ["Error images of the worst row per scene (signed heat map: white 0, blue too dark, red too bright, "
             "saturated at ±0.5; runtime/images/png_image.h):", ""]
     img_dir = os.path.join(doc_dir, "accuracy")
@@ -298,12 +298,12 @@ def is_vssm_with_fallback(r):
 
 
 def targets(rows, refs, img_dir):
-    """Issue 9's first done-when: per target scene the best VSSM sample with PCF fallback against its bound,
+    """Per target scene the best VSSM sample with PCF fallback against its bound,
     the model floor (ref_pcss_dense) beside it, and for a missed bound the error image of that row."""
     ref = {(r["base"], r["scene"]): r["metrics"]["rmse"] for r in refs}
-    out = ["### Issue 9 targets (generated)", "",
+    out = ["### VSSM targets (generated)", "",
            "The best VSSM sample with PCF fallback per scene (samples whose spec has `blocker moments` and "
-           "`fallback pcf`), against issue 9's bound, beside `ref_pcss_dense`: PCSS with an 8×8 grid blocker "
+           "`fallback pcf`), against its target bound, beside `ref_pcss_dense`: PCSS with an 8×8 grid blocker "
            "search and 16×16 grid depth tests over the uncapped penumbra kernel, the samples' receiver-plane bias "
            "(the densest PCSS the language has: the single-depth-map, average-blocker model that VSSM's eq. 4 and "
            "box filter approximate, with next to no sampling error). Where both miss the bound the cause is that "

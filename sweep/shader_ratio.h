@@ -1,4 +1,4 @@
-// Specialized vs generic (issue 11 item 4): the same variant on the same case compiled both
+// Specialized vs generic (docs/sweep.md): the same variant on the same case compiled both
 // ways (`shaders: ["specialized", "generic"]`), paired, and the frame-time ratio
 // specialized ÷ generic (< 1: specialization buys time). results.csv/json carry it on both rows
 // of a pair (`specialized_over_generic`), `shadowc sweep` prints the table, report.html too.

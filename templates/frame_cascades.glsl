@@ -1,7 +1,7 @@
 // frame_cascades.glsl — a cascaded sun (`cascades N`, SHADOWC_CASCADES = N): the frame of the
 // cascade the lookup is in, so that every orthographic function of frame_ortho.glsl, kernel.glsl
 // and bias.glsl works per cascade unchanged. Included at the top of frame_ortho.glsl.
-// Design (issue 14 item 3): the N cascades are tiles of ONE atlas map, SHADOWC_CASCADE_GRID tiles
+// Design: the N cascades are tiles of ONE atlas map, SHADOWC_CASCADE_GRID tiles
 // per side (Godot and Unity pack directional splits the same way), so the light-depth image and
 // every pass of the manifest stay one 2D image; the lookup clamps each texel fetch to its
 // cascade's tile (lookup/cascade_tile.glsl). Every cascade shares the sun's light view and its

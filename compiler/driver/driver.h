@@ -1,4 +1,4 @@
-// The compiler driver: the one place that runs the stages in order (DESIGN.md "The pipeline"):
+// The compiler driver: the one place that runs the stages in order:
 //   load (dsl/ lexer + parser) -> check (spec/) -> plan (plan/) -> emit (emit/) -> backend
 // for every caller — the CLI, validation/, the tests, bench/, `sweep` and `plan`. Nothing else
 // wires stages together (tests/architecture keeps it so). The result lives in memory; writing

@@ -1,5 +1,5 @@
 // The includable lookup's interface to the engine that #includes <filter>_lookup.glsl
-// (issue 13 item 2, docs/integration.md "The lookup's interface"):
+// (docs/integration.md "The lookup's interface"):
 //  * placement: every resource it declares (the frame block and the shadow-map images) goes to
 //    descriptor set N at the shade pass's binding + B — `shadowc compile --lookup-set N
 //    --lookup-binding-base B`, in the spirit of glslc's --resource-set-binding and

@@ -40,7 +40,7 @@ std::string specializeTemplate(const std::string& templatePath, const Specializa
 }
 
 // An unrolled quadtree calls its node test once per node (85 call sites at height 3): kept as
-// calls, the -O recipe takes 0.1 s of CPU instead of 2.6 s (issue 10; backend/dont_inline.h).
+// calls, the -O recipe takes 0.1 s of CPU instead of 2.6 s (backend/dont_inline.h).
 std::vector<std::string> keptCalls(const Specialization& specialization) {
   std::vector<std::string> out;
   for (const Table& t : specialization.tables)

@@ -1,6 +1,6 @@
-// The manifest: the contract between the compiler and the runtime (DESIGN.md, "The manifest
-// is the contract"). The runtime executes what is listed here and knows nothing about the
-// technique behind it. Serialized as manifest.json; see docs/manifest.md for the schema.
+// The manifest: the contract between the compiler and the runtime. The runtime executes what
+// is listed here and knows nothing about the technique behind it. Serialized as manifest.json; see docs/manifest.md for
+// the schema.
 #pragma once
 
 #include <array>
@@ -118,7 +118,7 @@ struct Pass {
   std::optional<ParameterBlock> parameters;  // generic shaders only (JSON "parameters", absent otherwise)
 };
 
-// The includable lookup function for engines (DESIGN.md: "the shade function's interface").
+// The includable lookup function for engines (docs/integration.md "The lookup's interface").
 struct ShadeInterface {
   std::string glsl;       // file with the function and its resource declarations
   std::string function;   // e.g. "shadowc_visibility"

@@ -1,4 +1,4 @@
-// The generic variant of a filter (`shadowc compile --generic`, issue 11 item 4): the same
+// The generic variant of a filter (`shadowc compile --generic`, docs/cli.md): the same
 // filter as engines usually ship it — one shade shader whose numeric options are members of a
 // uniform block the runtime fills from the manifest, so that neither glslang nor the driver's
 // JIT can fold them and every loop bound is dynamic. The planner's typed values are rewritten

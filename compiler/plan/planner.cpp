@@ -67,9 +67,10 @@ class Planner {
     return v;
   }
 
-  // Fused prefilter (issue 10): when only the summed-area table reads the moments (no blur, no
-  // mips), the SAT row scan warps the light depth itself (sat_rows.comp SHADOWC_SAT_FROM_DEPTH)
-  // and neither a moments pass nor a moments image exists: two full-map passes instead of three.
+  // Fused prefilter (docs/performance.md "The fused prefilters"): when only the summed-area
+  // table reads the moments (no blur, no mips), the SAT row scan warps the light depth itself (sat_rows.comp
+  // SHADOWC_SAT_FROM_DEPTH) and neither a moments pass nor a moments image exists: two full-map passes instead of
+  // three.
   bool fusedSat() const {
     const bool blur = spec_.prefilter.blur != BlurKind::None && spec_.prefilter.blurRadius > 0;
     return spec_.storage.sat != SatKind::None && !blur && !spec_.prefilter.mips;

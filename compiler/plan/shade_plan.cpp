@@ -109,7 +109,7 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   defBool("SHADOWC_KERNEL_PENUMBRA", s.kernel.size == KernelSize::Penumbra);
   defReal("SHADOWC_KERNEL_FIXED_TEXELS", std::max(1, s.kernel.fixedTexels));
   defReal("SHADOWC_KERNEL_MAX_TEXELS", std::clamp(s.kernel.maxTexels, 1.0, spec::kMaxKernelTexels));
-  // An int32 SAT box sum fits in 32 bits up to 255^2 texels (255^2 * 65536 < 2^32, FACTS.md): a
+  // An int32 SAT box sum fits in 32 bits up to 255^2 texels (255^2 * 65536 < 2^32): a
   // penumbra kernel wider than 255 texels is summed in pieces of at most 255 a side (sat.glsl).
   const bool int32Sat = moments && s.storage.sat == SatKind::Int32;
   if (int32Sat && s.kernel.size == KernelSize::Penumbra)

@@ -10,7 +10,7 @@
 namespace shadowc {
 
 // Throws std::invalid_argument for a spec the lookup cannot specialize (the checker's rules
-// are meant to make that unreachable; see issue 8).
+// are meant to make that unreachable; tests/dsl/precondition_cli_test.cpp).
 Specialization planShadeSpecialization(const FilterSpec& spec);
 
 }  // namespace shadowc

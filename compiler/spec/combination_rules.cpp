@@ -54,7 +54,7 @@ struct Facts {
   bool splitCountOk() const { return static_cast<int>(r.explicitSplits.size()) == s.moments.layers + 1; }
   bool vssm() const { return moments && s.blocker.kind == BlockerKind::Moments; }
   bool msm() const { return moments && s.moments.warp == Warp::Msm; }
-  // Exponential moments summed in an fp32 SAT (issue 9 defect 3): cancellation, E0420.
+  // Exponential moments summed in an fp32 SAT: cancellation, E0420.
   bool expFp32Sat() const {
     return exponential && (s.storage.sat == SatKind::Fp32Centered || s.storage.sat == SatKind::Fp32Naive);
   }

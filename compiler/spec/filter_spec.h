@@ -3,7 +3,7 @@
 // This is the contract between the front end (dsl/ -> spec/check) and the planner/emitter
 // (plan/, emit/). Every field has an explicit value after checking: no "unset" survives
 // the checker, so the planner never guesses a default. The names of the axes follow
-// DESIGN.md ("A filter is a product of orthogonal choices").
+// docs/dsl.md "Settings".
 #pragma once
 
 #include <cstdint>
@@ -38,7 +38,7 @@ struct LightSpec {
 // width of the sun's cone of directions one unit behind a blocker.
 double sunPenumbraSlope(double angleDegrees);
 
-// ---- cascades (issue 14 item 3) -------------------------------------------------------------
+// ---- cascades -------------------------------------------------------------------------------
 // Cascaded shadow maps for a sun (docs/dsl.md "cascades"): the camera frustum is cut into `count`
 // depth slices, each shadowed by its own orthographic map, the maps packed as tiles of one atlas.
 // Split i of n (camera depths near..far) is placed by:
@@ -102,7 +102,7 @@ struct StorageSpec {
   SatKind sat = SatKind::None;
   // SAT box corners: whole texels (the box snaps to the texel grid, so visibility is constant
   // per texel) or fractional, the exact integral of the texels under the continuous box read as
-  // a bilinear interpolation of the SAT (issue 9 defect 6; sat.glsl). `sat(K, corners: C)`.
+  // a bilinear interpolation of the SAT (sat.glsl). `sat(K, corners: C)`.
   bool fractionalCorners = false;
 };
 
@@ -136,7 +136,7 @@ struct BlockerSpec {
   int uniformM = 5;
   int quadtreeHeight = 3;
   // Uniform: subdivide only a non-planar search region (z_avg >= d, Algorithm 1 L11-L15), or
-  // always (m^2 box reads). `uniform(m, subdivide: always|nonplanar)`; issue 9 defect 8.
+  // always (m^2 box reads). `uniform(m, subdivide: always|nonplanar)`.
   bool uniformNonPlanarOnly = false;
 };
 
@@ -214,7 +214,7 @@ struct FilterSpec {
   bool backfaceShadowed = true;
   CascadeSpec cascades;  // a sun only (checker, light_rules.cpp)
   // Largest shadow-map side (texels) the precision checks assume: SAT sums of W^2 texels
-  // lower the EVSM exponent limit by ln(W^2)/2 (FACTS.md "Precision"). The runtime must not
+  // lower the EVSM exponent limit by ln(W^2)/2 (docs/dsl.md "Exponent limits"). The runtime must not
   // run the filter on a larger map. Setting `map_size`.
   int mapSize = 2048;
   // Debug only, not reachable from the DSL: read every int32 SAT box with one 4-corner sum

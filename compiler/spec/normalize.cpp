@@ -27,7 +27,7 @@ void normalize(FilterSpec& spec, const SettingsRead& given) {
       k.fixedTexels = w;
     }
   }
-  // Kernel max: what the storage supports (issue 9 item 2). A summed-area table answers a box of
+  // Kernel max: what the storage supports. A summed-area table answers a box of
   // any size at the same cost (the int32 one in exact pieces of <= 255 texels, sat.glsl), so a
   // penumbra kernel over a SAT is clamped only by the map. Depth taps, mip chains and the min-max
   // pyramid keep 64: their levels are sized from `max` and taps spread over it.
@@ -64,8 +64,8 @@ void normalize(FilterSpec& spec, const SettingsRead& given) {
   // Non-planar sub-kernels (z_avg >= d) of subdivided VSSM walks: PCF with 2x2 samples, the
   // paper's choice for its small sub-kernels (vssm-yang2010 sec. 5.1 option 2), unless `fallback
   // none` asks for option 1 (lit). Without any subdivision the "sub-kernel" is the whole search
-  // or penumbra box, where 2x2 samples measured worse than lit (docs/accuracy.md, issue 9 defect
-  // 4), so the default stays none there.
+  // or penumbra box, where 2x2 samples measured worse than lit (docs/accuracy.md
+  // "VSSM options"), so the default stays none there.
   const bool subdivided = spec.kernel.subdivision != Subdivision::None || spec.blocker.subdivision != Subdivision::None;
   if (!given.fallback && moments && spec.blocker.kind == BlockerKind::Moments && subdivided)
     spec.fallback = FallbackSpec{true, 2};

@@ -1,4 +1,4 @@
-// Exponent limits per storage format. Numbers: FACTS.md "Precision".
+// Exponent limits per storage format. Numbers: docs/dsl.md "Exponent limits".
 #include "spec/precision.h"
 
 #include <fmt/format.h>

@@ -1,4 +1,4 @@
-// Precision limits of the moment storage formats (FACTS.md "Precision"; lauritzen2008 sec. 6).
+// Precision limits of the moment storage formats (docs/dsl.md "Exponent limits"; lauritzen2008 sec. 6).
 // The exponential warps store e = exp(c (d - 1)) and e^2 (positive part), and exp(c- (1 - d))
 // and its square (EVSM4 negative part), so the format must represent a dynamic range of
 // exp(2c) in the second moment. The checker rejects exponents above these limits instead of
@@ -20,7 +20,7 @@ struct ExponentLimit {
 ExponentLimit warpExponentLimit(const StorageSpec& storage, int mapSize);
 
 // Int32 16.16 SAT: a box sum of k texels of values <= 1 fits in 32 bits while k*65536 < 2^32
-// (modular arithmetic makes every such box sum exact; FACTS.md), i.e. k <= 65535 texels.
+// (modular arithmetic makes every such box sum exact; Lauritzen 2007), i.e. k <= 65535 texels.
 inline constexpr int kInt32SatMaxBoxTexels = 65535;
 // So a wider box is summed in pieces of at most 255 texels a side (255^2 <= 65535), each exact,
 // added in float (templates/lookup/sat.glsl): kernels up to the whole map keep 16.16 precision.

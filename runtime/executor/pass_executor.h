@@ -1,6 +1,6 @@
 // Runs a compiled filter: every image, sampler, pipeline and descriptor set the manifest
 // lists, the passes in manifest order, per-pass GPU timestamps. Driven by the manifest only;
-// knows nothing about shadow techniques (DESIGN.md). Mapping and timing: docs/runtime.md.
+// knows nothing about shadow techniques. Mapping and timing: docs/runtime.md.
 #pragma once
 
 #include <array>

@@ -1,6 +1,6 @@
 // The run harness: the one way a compiled filter is run (`validate`, `demo`, `sweep`, the
 // stability suite, the GPU tests, the benchmarks). Compiled passes + inputs in, outputs +
-// per-pass timings out. It knows the manifest only (DESIGN.md: the runtime knows nothing about
+// per-pass timings out. It knows the manifest only (the runtime knows nothing about
 // techniques): the caller gets `CompiledPasses` (manifest/compiled_passes.h) from the driver's
 // artifact (driver::Artifact::passes()) or from a directory written by `shadowc compile`.
 #pragma once

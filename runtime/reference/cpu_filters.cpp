@@ -94,7 +94,7 @@ SatU32 buildSatU32(const ImageView& img) {
       for (uint32_t c = 0; c < ch; ++c) {
         const double v = std::clamp(img.at(int(x), int(y), c), 0.0, 1.0);
         uint32_t s = uint32_t(std::nearbyint(v * 65536.0));  // ties to even, as roundEven in sat_common.glsl
-        // Unsigned adds and subtracts wrap modulo 2^32: the box sums stay exact (FACTS.md).
+        // Unsigned adds and subtracts wrap modulo 2^32: the box sums stay exact (Lauritzen 2007).
         if (x > 0) s += sat.data[(size_t(y) * w + x - 1) * ch + c];
         if (y > 0) s += sat.data[(size_t(y - 1) * w + x) * ch + c];
         if (x > 0 && y > 0) s -= sat.data[(size_t(y - 1) * w + x - 1) * ch + c];

@@ -46,7 +46,7 @@ struct DepthStats {
 };
 DepthStats boxDepthStats(const ImageView& depth, Rect r);
 
-// --- Summed-area tables (vssm-yang2010 sec. 4; FACTS.md precision numbers) -----------------
+// --- Summed-area tables (vssm-yang2010 sec. 4; precision: docs/stability.md) --------------
 // Inclusive tables: S(x, y) = sum over x' <= x, y' <= y. Box sums use the four corners
 // S(x1,y1) - S(x0-1,y1) - S(x1,y0-1) + S(x0-1,y0-1), a corner with index -1 reading 0.
 struct SatU32 {  // int32 16.16 fixed point: uint(roundEven(clamp(v, 0, 1) * 65536)), sums mod 2^32

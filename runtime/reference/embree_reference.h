@@ -1,5 +1,5 @@
 // Ground truth, ray traced with Embree: by default the shadowing term a renderer multiplies its
-// lighting by (DESIGN.md "What right means"; the ratio estimator of Heitz, Hill & McGuire 2018):
+// lighting by (docs/scenes.md "Ground truth"; the ratio estimator of Heitz, Hill & McGuire 2018):
 // unoccluded light over all light, each light sample weighted by cos(theta_receiver) *
 // cos(theta_light) / r^2, over the part of the light in front of the receiver's tangent plane.
 // Light behind that plane is the N.L term's business, not the shadow's. The unweighted fraction

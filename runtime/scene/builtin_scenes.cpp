@@ -230,7 +230,7 @@ const std::map<std::string, ordered_json>& builtins() {
                box("seam_crate", v3(0.8, 0.5, 0.5), transform(v3(-0.3, 0.25, -1.5), v3(0, 20, 0))),
                sphere("corner_sphere", 0.3, transform(v3(-1.4, 0.55, 1.3))),
                box("pillar", v3(0.2, 1.0, 0.2), transform(v3(0.9, 0.5, 1.6)))});
-    // Cascades (issue 14 item 3): a camera 6 m up looking along a 160 m street, casters from 5 m to
+    // Cascades: a camera 6 m up looking along a 160 m street, casters from 5 m to
     // 150 m away, so one map fitted to the scene spends most texels where the camera sees little.
     // Three posts stand just before the three splits of `cascades 4` (practical, lambda 0.5, at
     // camera depths 24.3, 50.9 and 89.9 m for this camera) so that their shadows cross each

@@ -1,4 +1,4 @@
-// Cascaded shadow maps for a sun (issue 14 item 3): the camera-depth splits and the orthographic
+// Cascaded shadow maps for a sun (docs/scenes.md "Cascades"): the camera-depth splits and the orthographic
 // window of each cascade, written into FrameSetup (the rasterizer's per-cascade matrices) and the
 // cascade fields of ShadowcFrame (templates/frame_cascades.glsl, the lookup's side).
 #pragma once
@@ -14,7 +14,7 @@ namespace shadowc::rt {
 enum class CascadeScheme { Uniform, Log, Practical };
 
 // What the manifest's spec says ("cascades": {count, split, lambda, blend, grid}); count 0 when
-// the filter is not cascaded. The runtime reads the manifest only (DESIGN.md).
+// the filter is not cascaded. The runtime reads the manifest only.
 struct CascadeConfig {
   int count = 0;
   CascadeScheme split = CascadeScheme::Practical;

@@ -7,7 +7,7 @@
 // The minimum variance is scaled by the warp's slope squared (d warp/d d)^2 = (c e)^2, so one
 // depth-space floor means the same everywhere.
 // Guards: the receiver depth is clamped to [0, 1] before warping, so the receiver warp is
-// bounded by exp(c) which the compiler keeps finite (c <= 42 fp32, FACTS.md).
+// bounded by exp(c) which the compiler keeps finite (c <= 42 fp32, docs/dsl.md "Exponent limits").
 #ifndef SHADOWC_EVSM_GLSL
 #define SHADOWC_EVSM_GLSL
 

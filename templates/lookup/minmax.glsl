@@ -4,7 +4,7 @@
 // with 2^L >= the rectangle's width, where it covers at most 2 x 2 cells. The pyramid stops at
 // level ceil(log2 max) (planner.cpp pyramidLevels), and the influence rectangle is wider than
 // `max` (bilinear taps, the blur footprint): clamped to the top level it can span 3 or more
-// cells per axis, so every cell from its first to its last is read (issue 9, defect 1: reading
+// cells per axis, so every cell from its first to its last is read (reading
 // only the 4 corner cells missed occluders in the middle ones; stability case
 // minmax_three_top_cells). The result bounds the kernel's depths conservatively (it may include
 // a few texels around the kernel), so the early out is exact whenever it fires:

@@ -8,16 +8,16 @@
 //                  wrap around mod 2^32 and the 4-corner difference is done in uint, which is
 //                  exact as long as the box sum itself fits in 32 bits (255^2 * 65536 < 2^32).
 //                  A wider box (SHADOWC_SAT_PIECES > 1) is cut into pieces of at most 255 texels
-//                  a side, each an exact uint box sum, added in float (issue 9 item 2: kernels up
+//                  a side, each an exact uint box sum, added in float (kernels up
 //                  to the whole map, below). Mean = sum / (65536 * area).
 //   fp32 centered: sums of (v - 0.5); mean = sum / area + 0.5 (the usual fix, still 0.09 off on
 //                  1x1 boxes of a 2048^2 map: docs/stability.md; exponential warps are E0420).
-//   fp32 naive:    plain sums; kept so the stability suite can show its error (FACTS.md).
+//   fp32 naive:    plain sums; kept so the stability suite can show its error (docs/stability.md).
 // Guards: rectangles are clamped to the map by the caller (kernel.glsl) and their area is >= 1.
 #ifndef SHADOWC_SAT_GLSL
 #define SHADOWC_SAT_GLSL
 
-// Variance noise of int32 box means (issue 9, defect 2): each stored value is within half a
+// Variance noise of int32 box means: each stored value is within half a
 // quantum (2^-17) of the exact one, so a box mean of x and of x^2 each err by up to e = 2^-17 and
 // E[x^2] - E[x]^2 by up to e (1 + 2 E[x]) + e^2 <= 3 * 2^-17 = 2.29e-5, plus fp32 rounding of the
 // means: 2.4e-5. A smaller minimum variance (the default is 1e-5) lets that noise, not the
@@ -65,7 +65,7 @@ vec4 shadowc_satMeanOfSum(shadowc_SatSum sum, float area) {
 #endif
 
 #if SHADOWC_SAT_WIDE
-// Wide int32 boxes (issue 9 item 2: kernels up to the whole map at bounded cost, without giving
+// Wide int32 boxes (kernels up to the whole map at bounded cost, without giving
 // up the 16.16 precision small boxes need; fewer fractional bits would raise the variance noise
 // of every 1x1 box by 2^(16-F), see shadowc_satVarianceFloor). Along each axis the box is cut
 // into pieces of at most 255 texels; each piece box sum fits in 32 bits, so its wrap-around
@@ -113,7 +113,7 @@ vec4 shadowc_summedMean(ivec4 rect, int layer) {
 }
 
 #if SHADOWC_SAT_FRACTIONAL
-// Fractional corners (issue 9 defect 6): the mean over the continuous box (x0, y0, x1, y1) in
+// Fractional corners: the mean over the continuous box (x0, y0, x1, y1) in
 // texel units (texel i covers [i, i+1)), i.e. the exact integral of the piecewise-constant
 // moments under the box, which is the bilinear interpolation of the SAT at the four corners.
 // It is evaluated without interpolating large sums (int32 sums wrap): per axis the box covers a

@@ -72,7 +72,7 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r) {
 // Texel rectangle whose texels can influence the result: the early out must cover all of it to
 // be exact (the widest kernel, grown by one texel for bilinear taps and rounding, and by the
 // prefilter's blur radius, SHADOWC_EARLY_OUT_GROW: a blurred moment holds texels that far
-// away; issue 9 defect 5, stability case minmax_blur_footprint).
+// away; stability case minmax_blur_footprint).
 ivec4 shadowc_influenceRect(shadowc_Receiver r) {
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS || SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM || SHADOWC_KERNEL_PENUMBRA
   ivec4 rect = shadowc_kernelRect(r.texel, shadowc_searchTexels(r));
@@ -87,7 +87,7 @@ ivec4 shadowc_influenceRect(shadowc_Receiver r) {
 
 #if SHADOWC_BACKFACE_SHADOWED
 // True when no point of the light lies in front of the receiver's tangent plane: there the
-// shadowing term is 0 by definition (DESIGN.md "What right means", docs/scenes.md; the N.L term
+// shadowing term is 0 by definition (docs/scenes.md "Ground truth"; the N.L term
 // already darkens it in a renderer), while a shadow map sees the receiver's own surface, or,
 // after a bias or normal offset, nothing at all (lit back faces). One test, no fetch:
 //   spot:  the light's rectangle (or the disk inside it) of width w in the light view's z = 0

@@ -19,7 +19,7 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 // root is accepted first (shadowc_rootNeedsWalk). `nonPlanarOnly`:
 // Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
 // the den x den walk only when it is non-planar (classify accumulates nothing then).
-// What lavapipe charges (issue 10, docs/performance.md "One loop for the whole uniform walk"): an
+// What lavapipe charges (docs/performance.md "One loop for the whole uniform walk"): an
 // 8-lane SIMD group runs every branch body and every loop's first iteration, masked, whatever its
 // lanes decide (gallivm pushes an execution mask for an `if` and tests for live lanes only at a
 // loop's end); only further iterations are skipped once no lane is left. So the whole walk is ONE

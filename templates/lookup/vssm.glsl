@@ -72,7 +72,7 @@ vec4 shadowc_subBox(ivec3 node) {
 
 // The same box for a quadtree node (den = 2^level, dynamic in the walk): with whole-texel corners
 // the partition is a shift (ix * W >= 0, so it equals the division), because lavapipe has no
-// vector integer divide and splits each one into a scalar divide per lane (issue 10: nothing per
+// vector integer divide and splits each one into a scalar divide per lane (nothing per
 // node that could be cheaper).
 vec4 shadowc_qtBox(ivec3 node) {
 #if SHADOWC_SAT_FRACTIONAL
@@ -309,8 +309,8 @@ float shadowc_vssm(shadowc_Receiver r) {
   // is small, so a few bilinear PCF taps are both cheaper and more accurate. Detected on eq. 4's
   // blocker depth, or on z_avg (the plain mean depth of the search region) when it lies just in
   // front of d: right behind a flat occluder 1 - P -> 0 and eq. 4 finds no blocker (or a
-  // meaningless one), and the walk returned "lit" before the contact test (issue 9 defect 7;
-  // stability case contact_before_no_blocker_lit).
+  // meaningless one), and the walk returned "lit" before the contact test (stability
+  // case contact_before_no_blocker_lit).
   float zAvg = shadowc_boxMoments(searchBox, 0).x;
   bool touching = r.d - zAvg > 0.0 && r.d - zAvg < SHADOWC_CONTACT_EPSILON;
   if (touching || (zb >= 0.0 && abs(r.d - zb) < SHADOWC_CONTACT_EPSILON)) {

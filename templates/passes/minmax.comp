@@ -5,7 +5,7 @@
 // mip-maps rather than N-buffers, 1 ms vs 3 ms at 1024^2). r = min depth, g = max depth.
 // A level-k texel p is the min/max of level k-1's texels [2p, last(p)] (2x2, plus the last odd
 // row/column at the far edge), through storage views.
-// Fused (issue 10), so that a pyramid of L levels takes about L/2 dispatches and each level
+// Fused, so that a pyramid of L levels takes about L/2 dispatches and each level
 // is read at most once: one invocation per texel of the dispatch's last level, which
 //   SHADOWC_MINMAX_LEVEL0 = 1: reads the light depth itself and also stores it as level 0
 //                              (min = max = d), so the full-size level 0 is never read back;

@@ -2,7 +2,7 @@
 // sat_columns.comp and the lookups that read the `sat` image.
 //   SHADOWC_SAT_KIND 1 int32:         uint32 16.16 fixed point, v in [0,1] -> uint(round(v * 65536)),
 //                                     sums wrap mod 2^32: box sums stay exact while each box sum fits
-//                                     in 32 bits (Lauritzen 2007 via vssm-yang2010 sec. 6.4; FACTS.md)
+//                                     in 32 bits (Lauritzen 2007 via vssm-yang2010 sec. 6.4)
 //   SHADOWC_SAT_KIND 2 fp32 centered: fp32 sums of (v - 0.5); the worst 1x1 box mean still errs
 //                                     0.09 / 0.11 at 2048^2 / 4096^2 (stability suite sat_box_mean_*,
 //                                     docs/stability.md; 0.11 / 0.97 uncentered, 7.5e-6 int32)
@@ -36,7 +36,7 @@ vec4 shadowc_satEncode(vec4 v) { return v; }
 #endif
 
 // The scans read SHADOWC_SAT_BATCH texels of their row or column before they write any of them
-// (issue 10, measured on a lent NVIDIA H200): one invocation per row or column is 1-2 K
+// (measured on an NVIDIA H200, docs/performance.md): one invocation per row or column is 1-2 K
 // invocations for a whole map, too few to hide a texel read's latency on a GPU, and the column
 // scan reads and writes the same image, so one texel at a time each read waited for the store
 // before it (2048^2: rows 0.98 ms, columns 1.97 ms). Batches of 4: 0.97 / 1.08 ms; of 8: 0.63 /

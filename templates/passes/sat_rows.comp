@@ -5,7 +5,7 @@
 // one invocation per row (dispatch mode "rows": gl_GlobalInvocationID.x = y) runs a serial
 // prefix sum along x of the encoded moments, for every layer. Storage conventions and the
 // inclusive box-sum rule are in sat_common.glsl; uint additions wrap mod 2^32 on purpose.
-// SHADOWC_SAT_FROM_DEPTH 1 (fused, issue 10): the scan reads the light depth and warps it itself
+// SHADOWC_SAT_FROM_DEPTH 1 (fused): the scan reads the light depth and warps it itself
 // (layer_moments.glsl), so no moments pass and no moments image exist: one texel read and one
 // texel write per texel and layer, against two of each for moments.comp followed by this pass.
 // The values summed are bit for bit what the moments pass would store: a SAT's moments image is

@@ -1,4 +1,4 @@
-// `shadowc validate` says where a penumbra kernel's `max` cuts the scene (issue 9 item 2: the
+// `shadowc validate` says where a penumbra kernel's `max` cuts the scene (the
 // PCSS blocker search and kernel are not truncated silently): on large_penumbra a PCSS filter
 // with max 8 is cut on many penumbra pixels; the sibling with max 4096 on none; a fixed kernel
 // has no cap to report.

@@ -1,4 +1,4 @@
-// The checker alone owns validity (issue 8): every precondition the emitter, planner, lookup
+// The checker alone owns validity: every precondition the emitter, planner, lookup
 // specialization or quadtree table builder enforced is a checker rule with a code and a caret.
 // Each former precondition runs through the built binary's `shadowc check` and must fail there
 // with its code at its line:column; its valid neighbour must pass `check` and `compile`.

@@ -1,4 +1,4 @@
-// Cascaded suns (issue 14 item 3) at compile time: every sample with the depth representation and
+// Cascaded suns at compile time: every sample with the depth representation and
 // no min-max pyramid compiles as `light sun(angle: 0.53)` + `cascades 4`, every SPIR-V module
 // passes spirv-val, the shade pass and the includable lookup carry the atlas code (the tile clamp,
 // the cascade selection) and the block's cascade fields, and the manifest says cascades{count,

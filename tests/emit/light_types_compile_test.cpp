@@ -1,4 +1,4 @@
-// Every sample filter family compiles for a sun as well as for its spot light (issue 14): each
+// Every sample filter family compiles for a sun as well as for its spot light: each
 // samples/filters/*.shadow with its `light` line replaced by `light sun(angle: 0.53)` goes through
 // the driver, every SPIR-V module passes spirv-val, and the shade GLSL takes frame_ortho.glsl's
 // orthographic light space with the folded penumbra slope 2 tan(0.265 deg). The sibling checks

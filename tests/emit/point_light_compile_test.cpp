@@ -1,10 +1,9 @@
-// Every sample filter family that can filter a cube map compiles for a point light (issue 14
-// item 4): each samples/filters/*.shadow with its `light` line replaced by
-// `light point(radius: 0.15)` either compiles (every SPIR-V module passes spirv-val, the shade
-// GLSL takes frame_cube.glsl's atlas light space, the manifest says "point") or is refused with
-// E0450 — and which of the two is decided here from the spot sample's spec (a SAT, the min-max
-// pyramid or a subdivided kernel), independently of light_rules.cpp. Siblings: the spot sample has
-// none of the cube code, and a refusal must name its technique.
+// Every sample filter family that can filter a cube map compiles for a point light: each
+// samples/filters/*.shadow with its `light` line replaced by `light point(radius: 0.15)` either compiles (every SPIR-V
+// module passes spirv-val, the shade GLSL takes frame_cube.glsl's atlas light space, the manifest says "point") or is
+// refused with E0450 — and which of the two is decided here from the spot sample's spec (a SAT, the min-max pyramid or
+// a subdivided kernel), independently of light_rules.cpp. Siblings: the spot sample has none of the cube code, and a
+// refusal must name its technique.
 #include <gtest/gtest.h>
 
 #include "backend/spirv_backend.h"

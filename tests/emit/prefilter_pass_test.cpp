@@ -89,7 +89,7 @@ TEST(PrefilterPasses, UnusedWarpsAndSatKindsAreAbsentFromTheEmittedGlsl) {
       EXPECT_NE(sh.glsl.find("uimage2DArray"), std::string::npos);
       EXPECT_NE(sh.glsl.find("65536.0"), std::string::npos) << "16.16 fixed point encode";
       EXPECT_EQ(sh.glsl.find("- 0.5"), std::string::npos) << "centered fp32 path must be gone";
-      // Fused (issue 10): the scan warps the depth itself; the linear warp only, no splits image.
+      // Fused: the scan warps the depth itself; the linear warp only, no splits image.
       EXPECT_NE(sh.glsl.find("shadowDepth"), std::string::npos);
       EXPECT_EQ(sh.glsl.find("momentsIn"), std::string::npos);
       EXPECT_EQ(sh.glsl.find("exp("), std::string::npos) << "linear warp must not carry the EVSM code";

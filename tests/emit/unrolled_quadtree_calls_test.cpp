@@ -1,5 +1,5 @@
 // The unrolled quadtree's shade shader keeps its node callbacks as calls through the -O recipe
-// (issue 10: inlined 85 times at height 3 the recipe took 1.2-2.6 s; backend/dont_inline.h).
+// (inlined 85 times at height 3 the recipe took 1.2-2.6 s; backend/dont_inline.h).
 // Sibling: the table walk, which calls them from one loop, is inlined completely.
 #include <gtest/gtest.h>
 

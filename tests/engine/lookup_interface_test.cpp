@@ -1,10 +1,9 @@
-// The includable lookup fits into someone else's shader (issue 13 item 2): an engine fragment
-// shader (#version 450, no extensions) with its own `uniform … { … } frame;` at set 0, binding 0
-// includes <filter>_lookup.glsl compiled with --lookup-set 1 and passes spirv-val, with no two
-// resources on one (set, binding) and the SPIR-V's bindings equal to the manifest's "shade"
-// section; with SHADOWC_FRAME_EXTERNAL the frame values come from the engine's block. Siblings:
-// the old form (instance `frame`, set 0 binding 0) fails both ways, and the prefix check
-// catches an unprefixed global.
+// The includable lookup fits into someone else's shader (docs/integration.md "The lookup's
+// interface"): an engine fragment shader (#version 450, no extensions) with its own `uniform … { … } frame;` at set 0,
+// binding 0 includes <filter>_lookup.glsl compiled with --lookup-set 1 and passes spirv-val, with no two resources on
+// one (set, binding) and the SPIR-V's bindings equal to the manifest's "shade" section; with SHADOWC_FRAME_EXTERNAL the
+// frame values come from the engine's block. Siblings: the old form (instance `frame`, set 0 binding 0) fails both
+// ways, and the prefix check catches an unprefixed global.
 #include <gtest/gtest.h>
 
 #include <map>

@@ -1,4 +1,4 @@
-// Cascaded shadow maps for a sun (issue 14 item 3) on sun_outdoor_long, a camera looking along a
+// Cascaded shadow maps for a sun on sun_outdoor_long, a camera looking along a
 // 160 m street. The filter is pcss_poisson compiled with `light sun(angle: scene)` and a normal-offset
 // bias (1.5 texels): a constant or slope bias is in normalized depth, the same in every cascade
 // while their texels differ ~8x, and the sample's slope(0.05) is 8 m of peter-panning over this

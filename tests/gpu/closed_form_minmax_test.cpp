@@ -132,7 +132,7 @@ TEST_F(ClosedFormMinMaxTest, EveryLevelEqualsTheCpuPyramidExactly) {
   const std::vector<Level> cpu = cpuPyramid(depth, kMap, int(gpu.size()), true);
   std::string first;
   EXPECT_EQ(differences(gpu, cpu, first), 0u) << first;
-  // Fewer dispatches than levels (issue 10): 0-2, 3-4, 5-6.
+  // Fewer dispatches than levels: 0-2, 3-4, 5-6.
   int dispatches = 0;
   for (const Pass& p : cf->passes.manifest.passes) dispatches += p.kind == "minmax";
   EXPECT_EQ(dispatches, 3);

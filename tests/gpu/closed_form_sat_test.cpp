@@ -93,7 +93,7 @@ TEST_F(ClosedFormSatTest, Int32SatEqualsCpuIntegerSumsExactly) {
   const rt::cpu::ImageView moments{run.moments.data(), kMap, kMap, 2};
   const rt::cpu::SatU32 ref = rt::cpu::buildSatU32(moments);
   EXPECT_TRUE(satEquals(run.sat, ref));
-  // The table was built by the fused prefilter: no moments pass ran (issue 10).
+  // The table was built by the fused prefilter: no moments pass ran.
   EXPECT_FALSE(hasPass(*cf, "moments"));
   EXPECT_TRUE(hasPass(*cf, "sat_rows"));
 }
@@ -195,7 +195,7 @@ BoxCheck checkCenteredBoxes(const SatRun& run, uint32_t channel, double boundSca
     return uint32_t((s >> 33) % n);
   };
   for (int i = 0; i < 4000; ++i) {
-    // Half 1x1 boxes (the worst case of FACTS.md), half random sizes up to 64.
+    // Half 1x1 boxes (the worst case of docs/stability.md's SAT rows), half random sizes up to 64.
     const int w = i % 2 == 0 ? 1 : int(next(64)) + 1, h = i % 2 == 0 ? 1 : int(next(64)) + 1;
     const int x0 = int(next(kMap - uint32_t(w) + 1)), y0 = int(next(kMap - uint32_t(h) + 1));
     const rt::cpu::Rect r{x0, y0, x0 + w - 1, y0 + h - 1};

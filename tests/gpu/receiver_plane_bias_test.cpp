@@ -1,7 +1,7 @@
-// Receiver-plane depth bias (issue 9 item 4, templates/lookup/bias.glsl) against the Embree
+// Receiver-plane depth bias (Isidoro 2006, templates/lookup/bias.glsl) against the Embree
 // reference at the accuracy suite's settings (128^2 screen, 512^2 map, 8x8 light samples, cached):
 // acne = `over_darkening`, the fraction of the pixels whose reference is > 0.95 that the filter
-// darkens below 0.8; issue 9's bound is 0.005. Each policy check has a sibling with a bias that
+// darkens below 0.8; the target bound is 0.005. Each policy check has a sibling with a bias that
 // must break the same bound on the same scene (numbers measured with `shadowc validate`, the same
 // settings, in docs/accuracy.md "Bias").
 #include <gtest/gtest.h>

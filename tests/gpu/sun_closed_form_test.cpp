@@ -1,4 +1,4 @@
-// A sun over two parallel planes (issue 14): scene sun_two_planes, a 4-degree sun straight down
+// A sun over two parallel planes: scene sun_two_planes, a 4-degree sun straight down
 // over a half-plane edge (x < 0) at height h = 1 above the floor. A floor point at x sees the sun
 // direction at polar angle theta, azimuth phi pass the edge when x + h tan(theta) cos(phi) > 0.
 // The shadowing term weights directions by cos(theta) over the cap theta <= angle / 2 (docs/scenes.md),

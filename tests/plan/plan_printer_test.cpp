@@ -60,7 +60,7 @@ std::string sample(const std::string& name) {
 const std::vector<std::string> kVssmChecks = {
     "CHECK: ; shadowc pass graph, filter vssm_adaptive: 6 images, 7 passes",
     "CHECK: image shadow_depth r32f size map levels 1 layers 1 role input_depth",
-    // The fused prefilter (issue 10): no moments image, the SAT row scan warps the depth.
+    // The fused prefilter: no moments image, the SAT row scan warps the depth.
     "CHECK-NEXT: image sat rg32ui size map levels 1 layers 1 role internal",
     // A SAT kernel's max defaults to the whole map: the pyramid stops at level 8 (planner.h).
     "CHECK-NEXT: image minmax rg32f size map levels 9 layers 1 role internal",

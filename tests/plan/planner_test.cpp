@@ -43,7 +43,7 @@ TEST(Planner, DepthPcfPlansOnlyTheShadePass) {
   EXPECT_EQ(s.dispatch.size.domain, SizeDomain::Screen);
 }
 
-// The fused prefilter (issue 10): the SAT row scan reads the light depth, no moments pass or
+// The fused prefilter: the SAT row scan reads the light depth, no moments pass or
 // image exists; the min-max pyramid takes one dispatch per two levels.
 TEST(Planner, VssmInt32PlansFusedSatMinMaxShadeInOrder) {
   const FilterSpec spec = test::vssmInt32Spec();

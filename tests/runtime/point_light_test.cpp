@@ -1,4 +1,4 @@
-// A point light (issue 14 item 4) in the scene format, the frame and the Embree reference: the
+// A point light in the scene format, the frame and the Embree reference: the
 // JSON form loads and is checked; the reference's directions lie on the cone the sphere subtends
 // with equal solid angle per stratum; the cube atlas mapping of runtime/scene/cube_setup.h (the
 // one frame_cube.glsl mirrors) agrees with each face's clip matrix, with siblings that a wrong

@@ -1,4 +1,4 @@
-// A sun (issue 14) in the scene format and the Embree reference: the JSON form loads and is
+// A sun in the scene format and the Embree reference: the JSON form loads and is
 // checked, the reference's directions lie on the sun's cone with equal solid angle per stratum,
 // and its visibility on sun_two_planes matches the closed form of the cosine-weighted fraction of
 // the cone that passes a half-plane edge (docs/scenes.md, tests/gpu/sun_closed_form_test.cpp).

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A single-node Slurm on localhost for the slurm test (FACTS.md "More Debian packages"):
+# A single-node Slurm on localhost for the slurm test (Debian's slurm-wlm and munge):
 #   local_slurm.sh start DIR   munge key, munged as user munge, slurmctld and slurmd as root,
 #                              a small slurm.conf in DIR; prints the SLURM_CONF path when the
 #                              node is idle

@@ -91,7 +91,7 @@ TEST(Precision, BothSidesOfTheFp16Boundary) {
 }
 
 TEST(Precision, ExponentialWarpsInAnFp32SatAreRejectedAtAnyExponent) {
-  // Issue 9 defect 3: below the overflow limit (34.38 at 2048^2) small boxes still cancel (the
+  // Below the overflow limit (34.38 at 2048^2) small boxes still cancel (the
   // stability suite's exponent_limit_evsm4_sat_fp32_centered errs 1.0), so E0420 replaces E0404.
   const std::string fixed = "\nkernel fixed(5)";
   for (const char* sat : {"\nstorage sat(fp32_centered)", "\nstorage sat(fp32)"}) {
@@ -109,7 +109,7 @@ TEST(Precision, ExponentialWarpsInAnFp32SatAreRejectedAtAnyExponent) {
 }
 
 TEST(Normalize, VssmFallbackDefaultsToPcf2x2) {
-  // Issue 9 defect 4: non-planar sub-kernels default to the paper's option 2 (sec. 5.1), PCF.
+  // Non-planar sub-kernels default to the paper's option 2 (sec. 5.1), PCF.
   const std::string vssm = "moments linear\nstorage sat(int32)\nblocker moments\n";
   // The blocker walk is subdivided by default (uniform m = 5), so even a penumbra kernel has leaves.
   for (const char* kernel : {"kernel uniform(4)", "kernel quadtree(height: 2)", "kernel penumbra(max: 64)"}) {
@@ -129,7 +129,7 @@ TEST(Normalize, VssmFallbackDefaultsToPcf2x2) {
 }
 
 TEST(Combinations, UniformSubdivideOption) {
-  // Issue 9 defect 8: Algorithm 1 subdivides only non-planar kernels; `subdivide: nonplanar`
+  // Algorithm 1 subdivides only non-planar kernels; `subdivide: nonplanar`
   // (kernel and blocker walks), default `always`. Before, the argument was unknown (E0303).
   const std::string base = "moments linear\nstorage sat(int32)\n";
   const FilterSpec s =
@@ -148,7 +148,7 @@ TEST(Combinations, UniformSubdivideOption) {
 }
 
 TEST(Combinations, SatCornersOption) {
-  // Issue 9 defect 6: `sat(K, corners: bilinear)`; default whole texels.
+  // `sat(K, corners: bilinear)`; default whole texels.
   EXPECT_TRUE(load("moments linear\nstorage sat(int32, corners: bilinear)\nkernel fixed(5)").storage.fractionalCorners);
   EXPECT_FALSE(load("moments linear\nstorage sat(int32)\nkernel fixed(5)").storage.fractionalCorners);
   EXPECT_EQ(codes("moments linear\nstorage sat(int32, corners: round)\nkernel fixed(5)"), Codes{"E0302"});
@@ -157,7 +157,7 @@ TEST(Combinations, SatCornersOption) {
 }
 
 TEST(Combinations, Int32SatServesKernelsUpToTheMap) {
-  // Issue 9 item 2: an int32 SAT sums boxes wider than 255 texels in exact pieces (sat.glsl),
+  // An int32 SAT sums boxes wider than 255 texels in exact pieces (sat.glsl),
   // so E0412 (max <= 255) is retired and any max up to 4096 is accepted.
   const std::string base = "moments linear\nstorage sat(int32)\nblocker moments\n";
   EXPECT_EQ(codes(base + "kernel uniform(4, max: 255)"), Codes{});
@@ -291,7 +291,7 @@ TEST(Msm, Fp32SatPrecisionBothSidesOfTheBound) {
 }
 
 TEST(Combinations, ReceiverPlaneBias) {
-  // Issue 9 item 4: `bias receiver_plane(constant:, max_slope:)`, both optional.
+  // `bias receiver_plane(constant:, max_slope:)`, both optional.
   const FilterSpec d = load("depth\nbias receiver_plane");
   EXPECT_EQ(d.bias.kind, BiasKind::ReceiverPlane);
   EXPECT_DOUBLE_EQ(d.bias.constant, 1e-3);

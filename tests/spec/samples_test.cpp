@@ -61,7 +61,7 @@ TEST(Samples, AtLeast22AndTheDesignExample) {
 }
 
 TEST(Samples, DesignExampleIsVerbatim) {
-  // DESIGN.md's example must stay valid as written there.
+  // docs/dsl.md's example must stay valid as written there.
   const std::string design = test::readFile(test::sourceDir() / "samples/filters/vssm_adaptive.shadow");
   EXPECT_NE(design.find("kernel     quadtree(height: 3)"), std::string::npos);
   const LoadResult r = loadFilterSource(design, "vssm_adaptive.shadow");

@@ -1,4 +1,4 @@
-// `sweep` runs cascaded sun filters (issue 14): each case's scene is prepared once, and again per
+// `sweep` runs cascaded sun filters: each case's scene is prepared once, and again per
 // cascade configuration a variant's manifest asks for (rt::prepareSceneWithCascades: the atlas of
 // cascades fitted to the camera, the reference shared). The rows must be what
 // tests/gpu/cascades_test.cpp measures for the same filters, sizes and scene: sun_outdoor_long at

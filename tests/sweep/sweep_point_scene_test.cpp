@@ -1,4 +1,4 @@
-// A sweep's light-size override on a point-light scene (issue 14 item 4): the size is the sphere's
+// A sweep's light-size override on a point-light scene: the size is the sphere's
 // diameter, so the derived scene gets radius = size / 2 and reports lightWidth = size; the
 // sibling: the unchanged point_room keeps its own radius (0.15, lightWidth 0.3).
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 // VSSM contact path (vssm-yang2010 sec. 6.4): where blocker and receiver nearly touch, a few
-// bilinear PCF taps replace the SAT estimate. Issue 9, defect 7: the blocker walk returned "lit"
+// bilinear PCF taps replace the SAT estimate. A defect this guards: the blocker walk returned "lit"
 // when eq. 4 found no blocker mass (1 - P <= 1e-4, which is exactly what a receiver a hair behind
 // a flat occluder gives) before the contact test ran, so touching receivers came out fully lit.
 // The intent reference does not model the contact path; here the truth is known exactly: every

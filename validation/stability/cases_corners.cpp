@@ -1,4 +1,4 @@
-// SAT box corners (issue 9 defect 6): with whole-texel corners the box of a kernel snaps to the
+// SAT box corners: with whole-texel corners the box of a kernel snaps to the
 // texel grid, so the visibility of a receiver moving across a texel does not change and jumps at
 // the texel boundary (blocky penumbrae under magnification). Fractional corners (sat.glsl,
 // `sat(int32, corners: bilinear)`) integrate the moments under the continuous box. Both forms

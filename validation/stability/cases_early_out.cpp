@@ -1,6 +1,6 @@
 // Min-max early out (vssm-yang2010 sec. 6.1, Algorithm 1 L8-L10; templates/lookup/minmax.glsl):
 // the early out must be exact, so every texel that can influence the result has to be inside the
-// min-max rectangle it reads. Two ways it was not (issue 9, defects 1 and 5):
+// min-max rectangle it reads. Two ways it was not:
 //   * the rectangle clamps to the pyramid's top level, where it can span 3 cells per axis, and
 //     only the 2 x 2 corner cells were fetched: an occluder in the middle cell was missed;
 //   * the blur of plain moments spreads an occluder `radius` texels further than the kernel,

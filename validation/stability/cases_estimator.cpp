@@ -34,8 +34,8 @@ const std::vector<FilterSpec>& estimatorFilters() {
           "moments linear\nstorage sat(int32)\nblocker moments(quadtree(height: 2))\nkernel quadtree(height: 3)\n"
           "fallback pcf(2x2)"),
       libraryFilter("pcf", "depth\nsampling grid(5x5)"),
-      // Algorithm 1's subdivision of non-planar kernels only (issue 9 defect 8) and fractional
-      // SAT corners (defect 6): the same estimator cases hold them to the intent reference.
+      // Algorithm 1's subdivision of non-planar kernels only and fractional
+      // SAT corners: the same estimator cases hold them to the intent reference.
       libraryFilter("vssm_uniform_nonplanar",
                     "moments linear\nstorage sat(int32)\nblocker moments(uniform(m: 5, subdivide: nonplanar))\n"
                     "kernel uniform(4, subdivide: nonplanar)\nfallback pcf(2x2)"),

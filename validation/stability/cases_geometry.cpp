@@ -62,7 +62,7 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
                                            light);
                          }));
 
-  // Kernels wider than an int32 box sum holds (issue 9 item 2): on a 1024^2 map with depths near
+  // Kernels wider than an int32 box sum holds: on a 1024^2 map with depths near
   // 1 a box over 255^2 texels sums past 2^32 in 16.16, so sat.glsl cuts it into exact pieces of
   // at most 255 texels a side. Receivers spread over the map under a light 40 wide. The naive row reads each box with
   // one 4-corner difference (FilterSpec:: naiveUnguarded: SHADOWC_SAT_PIECES 1), as raising `max` without the pieces
@@ -184,7 +184,7 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
   }
 
   // Heights outside 1..5 (filter_spec.h kMinQuadtreeHeight..kMaxQuadtreeHeight) are the checker's error E0314 with
-  // a caret at the height: `shadowc check` rejects what the emitter cannot build (issue 8).
+  // a caret at the height: `shadowc check` rejects what the emitter cannot build.
   {
     StabilityCase c =
         makeCase("quadtree_height_0_rejected", "height 0: the checker rejects it (E0314 at the height)", {}, isVssm,

@@ -1,4 +1,4 @@
-// Light types (issue 14): the stability suite on a sun's orthographic frame (frame_ortho.glsl) and
+// Light types: the stability suite on a sun's orthographic frame (frame_ortho.glsl) and
 // a point light's cube atlas (frame_cube.glsl), with crafted maps and exactly placed receivers.
 //  * sun_depth_range_*: far - near of 1e-3 and 1e4 world units in an orthographic frame, the
 //    filters a sun serves (pcf, blur VSM, SAT VSM, VSSM, EVSM4), as depth_range_* for a spot.

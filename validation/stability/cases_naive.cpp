@@ -39,7 +39,7 @@ bool checkerRejects(const ExponentDemo& d, double negative, const char* code) {
 }
 
 FilterSpec evsmSpec(const ExponentDemo& d, double negative, bool naive) {
-  // EVSM in an fp32 SAT is a checker error at any exponent (E0420, issue 9 defect 3): the spec is
+  // EVSM in an fp32 SAT is a checker error at any exponent (E0420): the spec is
   // built as plain fp32 and given the SAT past the checker, to show what the checker prevents.
   const bool fp32Sat = isFp32Sat(d);
   const std::string body = fmt::format("moments evsm4({}, {})\nstorage {}\nmap_size {}", std::min(d.ours, 5.0), d.ours,
@@ -60,7 +60,7 @@ CaseResult exponentCase(SuiteContext& ctx, const FilterSpec& s, const ExponentDe
   CaseResult r;
   // Inside an fp32 SAT even the exponent at the limit fails: the limit (42 - ln(W^2)/2) prevents
   // overflow but not cancellation (box sums of e-^2 ~ 1e36 lose every digit of a small box), so
-  // both rows are shown failing (issue 9 defect 3).
+  // both rows are shown failing.
   const bool fp32Sat = isFp32Sat(d);
   r.naive = naive || fp32Sat;
   // Bound: the fp32 moments of a box of depths in [0, 1] with c- at the limit keep ~7 digits;

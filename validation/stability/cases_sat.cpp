@@ -1,4 +1,4 @@
-// SAT precision (vssm-yang2010 sec. 6.4; FACTS.md "Precision"): box means read back from the
+// SAT precision (vssm-yang2010 sec. 6.4; Lauritzen 2007): box means read back from the
 // GPU-built summed-area table of a 2048^2 / 4096^2 map with depths near 1 and small detail, with
 // the lookup's own corner arithmetic (sat.glsl), against exact double box means.
 #include <fmt/format.h>
@@ -42,7 +42,7 @@ CaseResult satBoxMeans(SuiteContext& ctx, const FilterSpec& spec, uint32_t size)
                                          : "mean accuracy well under sigma_min = sqrt(1e-5) = 3.2e-3";
   // Plain fp32 and centered fp32 are both shown failing here: on depths near 1, (v - 0.5) ~ 0.49
   // barely shrinks the corner sums, so centered fp32 errs 0.09 (2048^2) / 0.11 (4096^2) on 1x1
-  // boxes (issue 9 defect 3; the checker is to refuse it where it fails). No row is excused.
+  // boxes (the checker is to refuse it where it fails). No row is excused.
   r.naive = kind == SatKind::Fp32Naive || kind == SatKind::Fp32Centered;
   const DepthMap map = nearOneMap(size);
   const CompiledFilter& cf = compileCached(spec);

@@ -120,7 +120,7 @@ class Evaluator {
   }
 
   // kernel.glsl shadowc_kernelBox: the rectangle's texels, or the continuous box with fractional
-  // SAT corners (sat.glsl, issue 9 defect 6).
+  // SAT corners (sat.glsl).
   Box kernelBox(double cx, double cy, double w) const {
     if (!s_.storage.fractionalCorners || s_.storage.sat == SatKind::None) {
       const auto r = kernelRect(cx, cy, w);

@@ -23,8 +23,7 @@ geometry) within the bound written next to the case in the source, with its reas
 constexpr const char* kModes = R"(
 ## Failure modes and the fixes we apply
 
-**Summed-area table precision** (vssm-yang2010 sec. 6.4, following Lauritzen 2007; FACTS.md
-"Precision"). A SAT entry holds the sum of up to W^2 texels; in plain fp32 a box mean is the
+**Summed-area table precision** (vssm-yang2010 sec. 6.4, following Lauritzen 2007). A SAT entry holds the sum of up to W^2 texels; in plain fp32 a box mean is the
 difference of four large, nearly equal corner sums, and the rounding error of the corners
 (ulp of W^2 * 0.99 is 0.25 at 2048^2) divided by a small box area swamps the mean. Fix: the
 default SAT is int32 16.16 fixed point with wrap-around arithmetic: every box sum that fits in
@@ -54,7 +53,7 @@ and shown failing; the positive warp is stored as
 exp(c (d - 1)) <= 1 so it cannot overflow; the receiver depth is clamped to [0, 1] before
 warping; ESM is evaluated in log space with the exponent clamped to <= 0.
 
-**Whole-texel SAT corners** (issue 9 defect 6). A box whose corners snap to texels keeps the
+**Whole-texel SAT corners**. A box whose corners snap to texels keeps the
 visibility of a receiver constant across a texel and jumps at its boundary (0.186 for a 9-texel
 VSM kernel, 0.538 for a VSSM penumbra box at an occluder edge, `sat_fractional_corners`). Fix:
 `sat(K, corners: bilinear)` integrates the moments under the continuous box (templates/lookup/
@@ -95,7 +94,7 @@ must not produce NaN: the receiver depth is computed in normalized form, the slo
 uses a guarded N.L (a zero-length vector gives the maximum bias), the blocker depth is kept
 >= near before dividing by it (frame.glsl PCSS width).
 
-**Sun and point-light frames** (issue 14). The crafted frames also take a sun's orthographic
+**Sun and point-light frames**. The crafted frames also take a sun's orthographic
 form (frame_ortho.glsl: uv = 0.5 + 0.5 xy / halfExtent, search width slope (z_r - near) /
 (2 halfExtent), penumbra box sqrt(3)/2 slope (z_r - z_b) / (2 halfExtent), slope = 2 tan(angle /
 2)) and a point light's cube atlas (frame_cube.glsl: six faces of tan(half fov) 1.5 in a 3x3

@@ -1,4 +1,4 @@
-// The numerical stability suite (issue 5, docs/stability.md): hard cases for every filter they
+// The numerical stability suite (docs/stability.md): hard cases for every filter they
 // apply to, each asserting no NaN/Inf, every value in [0, 1] and an error against an exact
 // double-precision reference within a bound written next to the case with its reason; plus
 // the naive forms (plain fp32 SAT, unclamped EVSM exponent, unguarded 1/(1 - P) in the VSSM
@@ -25,7 +25,7 @@ struct CaseResult {
   std::string boundReason;
   uint64_t values = 0, nonFinite = 0, outOfRange = 0;
   // A naive or known-weak form: the row passes when the form FAILS the bound (shown failing where
-  // ours passes). There is no way to excuse a row: every other row passes or fails (issue 9).
+  // ours passes). There is no way to excuse a row: every other row passes or fails.
   bool naive = false;
   bool pass = false;
   std::string detail;  // worst receiver, per-kernel errors, or why it failed
