@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -71,6 +72,7 @@ struct FormCase {
   const char* sample;
   uint32_t map;
 };
+void PrintTo(const FormCase& c, std::ostream* os) { *os << c.sample << " " << c.map << "^2"; }
 
 class SatFormsBitIdentical : public VulkanTest, public ::testing::WithParamInterface<FormCase> {};
 
