@@ -97,6 +97,15 @@ INSTANTIATE_TEST_SUITE_P(
                       FormCase{"vssm_fp32_centered_sat", 2048}, FormCase{"vssm_fp32_centered_sat", 4096}),
     [](const auto& info) { return std::string(info.param.sample).substr(5) + "_" + std::to_string(info.param.map); });
 
+// Four channels (moment shadow maps' rgba32ui table) in both forms.
+TEST_F(SatFormsTest, FourChannelInt32TableIsTheSameInBothForms) {
+  const CompiledFilter* cf = compileFilterCached("msm_sat_int32", sampleSource("msm_sat_int32"));
+  ASSERT_NE(cf, nullptr);
+  const FormRun serial = runForm(context(), *cf, 509, "serial");
+  ASSERT_EQ(serial.sat.format, ImageFormat::RGBA32UI);
+  EXPECT_EQ(differingWords(serial.sat, runForm(context(), *cf, 509, "parallel").sat), 0u);
+}
+
 // The unfused row scan (it reads the moments image that `mips on` keeps) has both forms too.
 TEST_F(SatFormsTest, UnfusedScansGiveTheSameTableInBothForms) {
   const CompiledFilter* cf = compileFilterCached("vssm_fp32_centered_sat_unfused",
