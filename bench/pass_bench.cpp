@@ -7,11 +7,14 @@
 // filter is compiled by the driver and run through the run harness (warm-up, then the median of the timed runs); the
 // copies are a hand-built manifest run the same way.
 //
+// Passes with several forms (docs/manifest.md "Pass forms") are timed in each, beside the
+// executor's own choice for the device.
 // Usage: pass_bench [runs] [sample-substrings, '|'-separated] [map sizes, comma separated] [filter folders, comma
-// separated] [scene] [screen]
+// separated] [scene] [screen] [device]
 //   defaults: 5 runs after 2 warm-ups, every sample, 512,1024,2048, samples/filters, two_planes,
-//   screen 256^2 (the scene: a built-in name or a .json path, as `shadowc validate --scene`). bench/filters holds
-//   inputs that are no samples (the mixed scheme, the unfused moments + SAT reference).
+//   screen 256^2, lavapipe (else a Vulkan device index or name substring, e.g. nvidia) (the scene: a built-in name or a
+//   .json path, as `shadowc validate --scene`). bench/filters holds inputs that are no samples (the mixed scheme, the
+//   unfused moments + SAT reference).
 // Run with MESA_SHADER_CACHE_DISABLE=true so that runs are comparable.
 #include <fmt/core.h>
 
@@ -179,6 +182,17 @@ bool matches(const std::string& name, const std::string& only) {
   return only.empty();
 }
 
+// "auto" (the executor's own choice: the shade row and every pass with one form), then each form
+// name of passes that have several, in the order the manifest lists them.
+std::vector<std::string> formNames(const Manifest& m) {
+  std::vector<std::string> names{rt::kPassFormAuto};
+  for (const Pass& p : m.passes)
+    if (!p.forms.empty())
+      for (const PassForm& f : formsOf(p))
+        if (std::find(names.begin(), names.end(), f.name) == names.end()) names.push_back(f.name);
+  return names;
+}
+
 std::string repeat(const std::string& s, size_t n) {
   std::string out;
   for (size_t i = 0; i < n; ++i) out += s;
@@ -197,6 +211,8 @@ int main(int argc, char** argv) try {
   if (folders.empty()) folders.push_back(fs::path(SHADOWC_SOURCE_DIR) / "samples" / "filters");
   const std::string sceneName = argc > 5 ? argv[5] : "two_planes";
   const uint32_t screen = argc > 6 ? static_cast<uint32_t>(std::stoul(argv[6])) : 256;
+  rt::VulkanOptions device;
+  if (argc > 7) device.device = argv[7];  // as `shadowc validate --device`: an index or a name substring
 
   std::vector<driver::Artifact> filters;
   for (const fs::path& folder : folders)
@@ -212,7 +228,7 @@ int main(int argc, char** argv) try {
   std::sort(filters.begin(), filters.end(), [](const auto& a, const auto& b) { return a.spec.name < b.spec.name; });
   const CompiledPasses copies = copyPasses();
 
-  rt::VulkanContext ctx;
+  rt::VulkanContext ctx(device);
   fmt::print("device: {}; screen {}^2, {}; {} warm-up + {} timed runs, medians (ms)\n\n", ctx.describe(), screen,
              sceneName, kWarmup, runs);
   const rt::RunOptions options{kWarmup, runs, {}};
@@ -248,25 +264,35 @@ int main(int argc, char** argv) try {
 
     for (size_t f = 0; f < filters.size(); ++f) {
       const driver::Artifact& a = filters[f];
-      const rt::SceneRunResult r = rt::runOnScene(ctx, a.passes(), *scene, options);
-      std::map<std::string, std::pair<ImageFormat, double>> byKind;  // prefilter kind -> (format, ms)
-      for (size_t p = 0; p < a.manifest.passes.size(); ++p) {
-        const Pass& pass = a.manifest.passes[p];
-        const double ms = r.outputs.timing->passes[p].medianMs;
-        if (pass.kind == "shade") {
-          shades[f].ms[map] = ms;
-          shades[f].rmse[map] = r.metrics.rmse;
-          continue;
+      // A filter whose passes come in several forms runs once more per form (the executor's
+      // override): rows "sat [serial]", "sat [parallel]" beside "sat", the auto choice, which alone
+      // counts in the totals below.
+      for (const std::string& form : formNames(a.manifest)) {
+        rt::RunOptions run = options;
+        run.passForm = form;
+        const rt::SceneRunResult r = rt::runOnScene(ctx, a.passes(), *scene, run);
+        std::map<std::string, std::pair<ImageFormat, double>> byKind;  // prefilter kind -> (format, ms)
+        for (size_t p = 0; p < a.manifest.passes.size(); ++p) {
+          const Pass& pass = a.manifest.passes[p];
+          const double ms = r.outputs.timing->passes[p].medianMs;
+          if (pass.kind == "shade") {
+            if (form != rt::kPassFormAuto) continue;
+            shades[f].ms[map] = ms;
+            shades[f].rmse[map] = r.metrics.rmse;
+            continue;
+          }
+          const bool forced = form != rt::kPassFormAuto;
+          if (forced && pass.forms.empty()) continue;
+          const std::string kind = forced ? pass.kind + " [" + form + "]" : pass.kind;
+          auto [it, fresh] = byKind.try_emplace(kind, writtenFormat(a.manifest, pass).value_or(ImageFormat::R32F), 0.0);
+          it->second.second += ms;
         }
-        auto [it, fresh] =
-            byKind.try_emplace(pass.kind, writtenFormat(a.manifest, pass).value_or(ImageFormat::R32F), 0.0);
-        it->second.second += ms;
-      }
-      for (const auto& [kind, v] : byKind) {
-        auto row = std::find_if(rows.begin(), rows.end(),
-                                [&](const Row& x) { return x.filter == a.spec.name && x.kind == kind; });
-        if (row == rows.end()) row = rows.insert(rows.end(), Row{a.spec.name, kind, v.first, {}});
-        row->ms[map] = v.second;
+        for (const auto& [kind, v] : byKind) {
+          auto row = std::find_if(rows.begin(), rows.end(),
+                                  [&](const Row& x) { return x.filter == a.spec.name && x.kind == kind; });
+          if (row == rows.end()) row = rows.insert(rows.end(), Row{a.spec.name, kind, v.first, {}});
+          row->ms[map] = v.second;
+        }
       }
     }
   }
@@ -305,7 +331,7 @@ int main(int argc, char** argv) try {
   for (const driver::Artifact& a : filters) {
     std::map<uint32_t, double> total;
     for (const Row& r : rows)
-      if (r.filter == a.spec.name)
+      if (r.filter == a.spec.name && r.kind.find(" [") == std::string::npos)  // the auto choice only
         for (const auto& [map, ms] : r.ms) total[map] += ms;
     if (total.empty()) continue;
     fmt::print("| {} |", a.spec.name);

@@ -7,8 +7,10 @@ namespace shadowc::cli {
 
 CommandRunner registerValidate(CLI::App& app) {
   auto o = std::make_shared<ValidationOptions>();
-  CLI::App* sub = app.add_subcommand("validate", "Run a filter on a scene: per-pass GPU times and error vs. ray tracing");
-  sub->add_option("filter", o->filterPath, "Filter description (.shadow), or a compiled manifest.json / its directory")->required();
+  CLI::App* sub =
+      app.add_subcommand("validate", "Run a filter on a scene: per-pass GPU times and error vs. ray tracing");
+  sub->add_option("filter", o->filterPath, "Filter description (.shadow), or a compiled manifest.json / its directory")
+      ->required();
   sub->add_option("--scene", o->scene, "Built-in scene name or scene .json file")->required();
   sub->add_option("--size", o->size, "Screen width and height in pixels")->capture_default_str();
   sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
@@ -18,8 +20,13 @@ CommandRunner registerValidate(CLI::App& app) {
   sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");
   sub->add_flag("--validate", o->validation, "Enable the Khronos validation layer; any message fails the run");
   sub->add_option("--runs", o->runs, "Timed runs (the median is reported)")->capture_default_str();
-  sub->add_option("--warmup", o->warmup, "Untimed warm-up runs (lavapipe JIT-compiles on first use)")->capture_default_str();
-  sub->add_flag("--no-cache", [o](int64_t) { o->useCache = false; }, "Do not read or write the reference cache");
+  sub->add_option("--warmup", o->warmup, "Untimed warm-up runs (lavapipe JIT-compiles on first use)")
+      ->capture_default_str();
+  sub->add_option("--pass-form", o->passForm,
+                  "Form of passes that have several: auto (by the device), serial, parallel (default: "
+                  "env SHADOWC_PASS_FORM, else auto)");
+  sub->add_flag(
+      "--no-cache", [o](int64_t) { o->useCache = false; }, "Do not read or write the reference cache");
   return [o] { return runValidation(*o); };
 }
 

@@ -152,6 +152,7 @@ int runValidation(const ValidationOptions& o) {
   rt::RunOptions run;
   run.warmup = o.warmup;
   run.runs = o.runs;
+  run.passForm = o.passForm;
   const rt::SceneRunResult measured = rt::runOnScene(ctx, *compiled, *prepared, run);
   const rt::TimingResult& timing = *measured.outputs.timing;
   const std::vector<float>& result = measured.outputs.visibility;
@@ -166,6 +167,7 @@ int runValidation(const ValidationOptions& o) {
   fmt::print("timing   median of {} runs after {} warm-up, GPU timestamps\n", timing.runs, timing.warmup);
   for (const auto& p : timing.passes) fmt::print("  {:<16} {:<10} {:9.3f} ms\n", p.name, p.kind, p.medianMs);
   fmt::print("  {:<16} {:<10} {:9.3f} ms\n", "total", "", timing.totalMs);
+  if (!measured.outputs.forms.empty()) fmt::print("  {}\n", rt::describeChoices(measured.outputs.forms));
   fmt::print("error    over {} geometry pixels\n", metrics.compared);
   fmt::print("  rmse {:.5f}  mae {:.5f}  max {:.5f}  p99 {:.5f}\n", metrics.rmse, metrics.mae, metrics.maxAbsError,
              metrics.p99AbsError);
@@ -196,6 +198,11 @@ int runValidation(const ValidationOptions& o) {
     for (const auto& p : timing.passes)
       passes.push_back({{"name", p.name}, {"kind", p.kind}, {"median_ms", p.medianMs}, {"min_ms", p.minMs}});
     t["total_ms"] = timing.totalMs;
+    if (!measured.outputs.forms.empty()) {
+      auto& forms = t["pass_forms"] = nlohmann::ordered_json::array();
+      for (const auto& f : measured.outputs.forms)
+        forms.push_back({{"pass", f.pass}, {"form", f.form}, {"why", f.why}});
+    }
     j["timing"] = std::move(t);
     j["metrics"] = rt::toJson(metrics);
     if (caps)

@@ -22,6 +22,7 @@ struct ValidationOptions {
   bool validation = false;
   int runs = 10, warmup = 3;
   bool useCache = true;  // reference cache
+  std::string passForm;  // --pass-form: auto, or a form name (serial, parallel); "" = SHADOWC_PASS_FORM or auto
 };
 
 // Prints the report on stdout (progress on stderr). Returns the process exit code; throws

@@ -120,7 +120,8 @@ CompiledPasses Artifact::passes() const {
   CompiledPasses c;
   c.manifest = manifest;
   for (const Pass& p : manifest.passes)
-    if (const std::string* bytes = file(p.spirv)) c.files.emplace(p.spirv, *bytes);
+    for (const PassForm& f : formsOf(p))
+      if (const std::string* bytes = file(f.spirv)) c.files.emplace(f.spirv, *bytes);
   return c;
 }
 
@@ -152,11 +153,12 @@ std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec&
                                         const std::set<OutputKind>& engineOutputs) {
   std::set<std::string> names{kManifestFile, lookupFileName(spec.name)};
   std::set<std::string> stems{lookupFileName(spec.name).substr(0, lookupFileName(spec.name).rfind('.'))};
-  for (const Pass& p : plan.manifest.passes) {
-    names.insert(p.glsl);
-    names.insert(p.spirv);
-    stems.insert(p.spirv.substr(0, p.spirv.rfind('.')));
-  }
+  for (const Pass& p : plan.manifest.passes)
+    for (const PassForm& f : formsOf(p)) {
+      names.insert(f.glsl);
+      names.insert(f.spirv);
+      stems.insert(f.spirv.substr(0, f.spirv.rfind('.')));
+    }
   for (const auto& [kind, target] :
        {std::pair{OutputKind::Hlsl, CrossTarget::Hlsl}, {OutputKind::Msl, CrossTarget::Msl}})
     if (engineOutputs.count(kind))

@@ -35,19 +35,20 @@ bool crossOutputs(const Manifest& m, const std::vector<EmittedFile>& files, Cros
                   std::vector<EmittedFile>& out, std::string& log) {
   const char* ext = crossExtension(target);
   std::set<std::string> done;
-  for (const Pass& p : m.passes) {
-    if (!done.insert(p.spirv).second) continue;
-    const std::string* spv = findFile(files, p.spirv);
-    if (!spv) {
-      log += p.spirv + ": error: no such emitted file to translate\n";
-      return false;
+  for (const Pass& pass : m.passes)
+    for (const PassForm& p : formsOf(pass)) {  // every form of a pass (docs/manifest.md "Pass forms")
+      if (!done.insert(p.spirv).second) continue;
+      const std::string* spv = findFile(files, p.spirv);
+      if (!spv) {
+        log += p.spirv + ": error: no such emitted file to translate\n";
+        return false;
+      }
+      const CrossResult r = crossCompile(words(*spv), target, p.spirv);
+      log += r.log;
+      if (!r.ok) return false;
+      const std::string name = stemOf(p.spirv) + ext;
+      out.push_back({name, banner(m, name, target) + r.source});
     }
-    const CrossResult r = crossCompile(words(*spv), target, p.spirv);
-    log += r.log;
-    if (!r.ok) return false;
-    const std::string name = stemOf(p.spirv) + ext;
-    out.push_back({name, banner(m, name, target) + r.source});
-  }
 
   const std::string* lookup = findFile(files, m.shade.glsl);
   if (!lookup) {

@@ -82,16 +82,29 @@ FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, c
   // One shader per distinct output stem (mip1..mipK share "mip", minmax1..K share "minmax").
   std::map<std::string, EmittedShader> shaders;
   ShaderEmitOptions so{options.optimize, options.warningsAsErrors};
-  for (size_t i = 0; i < m.passes.size(); ++i) {
-    const PassSource& src = graph.sources[i];
+  // The local size of each form is read back from its shader.
+  auto emitted = [&](const PassSource& src) -> const EmittedShader* {
     auto it = shaders.find(src.stem);
     if (it == shaders.end()) {
       EmittedShader sh = emitComputeShader(src.templatePath, src.values, so);
       result.log += sh.log;
-      if (!sh.ok) return result;
+      if (!sh.ok) return nullptr;
       it = shaders.emplace(src.stem, std::move(sh)).first;
     }
-    m.passes[i].localSize = it->second.localSize;
+    return &it->second;
+  };
+  for (size_t i = 0; i < m.passes.size(); ++i) {
+    const PassSource& src = graph.sources[i];
+    if (src.forms.size() != m.passes[i].forms.size())
+      throw InternalError("pass '" + m.passes[i].name + "' has not one source per form");
+    const EmittedShader* sh = emitted(src);
+    if (!sh) return result;
+    m.passes[i].localSize = sh->localSize;
+    for (size_t k = 0; k < src.forms.size(); ++k) {
+      const EmittedShader* form = emitted(src.forms[k]);
+      if (!form) return result;
+      m.passes[i].forms[k].localSize = form->localSize;
+    }
   }
   for (auto& [stem, sh] : shaders) {
     result.files.push_back({stem + ".glsl", std::move(sh.glsl)});

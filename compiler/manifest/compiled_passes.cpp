@@ -12,13 +12,15 @@ CompiledPasses CompiledPasses::fromDirectory(const std::filesystem::path& dirOrM
   const std::filesystem::path dir = file.parent_path().empty() ? std::filesystem::path(".") : file.parent_path();
   CompiledPasses c;
   c.manifest = loadManifest(file.string());
-  for (const Pass& pass : c.manifest.passes) {
-    if (c.files.count(pass.spirv)) continue;  // passes that share a shader (mip1..mipK)
-    std::ifstream in(dir / pass.spirv, std::ios::binary);
-    if (!in)
-      throw std::runtime_error("pass '" + pass.name + "': SPIR-V file '" + (dir / pass.spirv).string() + "' not found");
-    c.files.emplace(pass.spirv, std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
-  }
+  for (const Pass& pass : c.manifest.passes)
+    for (const PassForm& form : formsOf(pass)) {  // every form: the executor picks one later
+      if (c.files.count(form.spirv)) continue;    // passes that share a shader (mip1..mipK)
+      std::ifstream in(dir / form.spirv, std::ios::binary);
+      if (!in)
+        throw std::runtime_error("pass '" + pass.name + "': SPIR-V file '" + (dir / form.spirv).string() +
+                                 "' not found");
+      c.files.emplace(form.spirv, std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
+    }
   return c;
 }
 

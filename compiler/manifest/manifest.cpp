@@ -46,8 +46,13 @@ constexpr std::array<std::pair<Access, const char*>, 5> kAccess{{{Access::Sample
                                                                  {Access::StorageWrite, "storage_write"},
                                                                  {Access::StorageReadWrite, "storage_read_write"},
                                                                  {Access::Uniform, "uniform"}}};
-constexpr std::array<std::pair<DispatchMode, const char*>, 3> kModes{
-    {{DispatchMode::Texels, "texels"}, {DispatchMode::Rows, "rows"}, {DispatchMode::Columns, "columns"}}};
+constexpr std::array<std::pair<DispatchMode, const char*>, 5> kModes{{{DispatchMode::Texels, "texels"},
+                                                                      {DispatchMode::Rows, "rows"},
+                                                                      {DispatchMode::Columns, "columns"},
+                                                                      {DispatchMode::RowGroups, "row_groups"},
+                                                                      {DispatchMode::ColumnGroups, "column_groups"}}};
+constexpr std::array<std::pair<FormDevice, const char*>, 3> kDevices{
+    {{FormDevice::Any, "any"}, {FormDevice::Cpu, "cpu"}, {FormDevice::Gpu, "gpu"}}};
 constexpr std::array<std::pair<ScalarType, const char*>, 3> kScalars{
     {{ScalarType::U32, "u32"}, {ScalarType::I32, "i32"}, {ScalarType::F32, "f32"}}};
 constexpr std::array<std::pair<SizeDomain, const char*>, 2> kDomains{
@@ -181,7 +186,79 @@ ParameterBlock parametersFromJson(const nlohmann::json& j, const std::string& pa
   return b;
 }
 
+nlohmann::ordered_json needsJson(const FormNeeds& n) {
+  nlohmann::ordered_json j;
+  j["device"] = nameOf(n.device, kDevices);
+  j["subgroup_size_min"] = n.subgroupSizeMin;
+  j["subgroup_operations"] = n.subgroupOperations;
+  return j;
+}
+FormNeeds needsFromJson(const nlohmann::json& j, const std::string& where) {
+  FormNeeds n;
+  n.device = parseEnum(j, "device", kDevices);
+  n.subgroupSizeMin = get<uint32_t>(j, "subgroup_size_min");
+  n.subgroupOperations = get<std::vector<std::string>>(j, "subgroup_operations");
+  const auto& known = subgroupOperationNames();
+  for (const std::string& op : n.subgroupOperations)
+    if (std::find(known.begin(), known.end(), op) == known.end())
+      throw ManifestError("manifest: " + where + ": unknown subgroup operation '" + op + "'");
+  return n;
+}
+
+// The alternatives of a pass: each names a shader and how to dispatch it; the bindings are the pass's.
+void formsFromJson(const nlohmann::json& e, Pass& p) {
+  if (!e.contains("form")) {
+    if (e.contains("forms") || e.contains("needs"))
+      throw ManifestError("manifest: pass '" + p.name + "' lists forms but does not name its own ('form')");
+    return;
+  }
+  p.form = get<std::string>(e, "form");
+  p.formNeeds = needsFromJson(field(e, "needs"), "pass '" + p.name + "'");
+  for (const auto& f : field(e, "forms")) {
+    PassForm form;
+    form.name = get<std::string>(f, "form");
+    form.needs = needsFromJson(field(f, "needs"), "pass '" + p.name + "' form '" + form.name + "'");
+    form.spirv = get<std::string>(f, "spirv");
+    form.glsl = get<std::string>(f, "glsl");
+    form.localSize = get<std::array<uint32_t, 3>>(f, "local_size");
+    const auto& d = field(f, "dispatch");
+    form.dispatch.size = sizeFromJson(field(d, "size"));
+    form.dispatch.mode = parseEnum(d, "mode", kModes);
+    p.forms.push_back(std::move(form));
+  }
+  std::vector<std::string> names;
+  for (const PassForm& f : formsOf(p)) {
+    if (f.name.empty() || std::find(names.begin(), names.end(), f.name) != names.end())
+      throw ManifestError("manifest: pass '" + p.name + "': form names must be unique and non-empty ('" + f.name +
+                          "')");
+    names.push_back(f.name);
+  }
+}
+
 }  // namespace
+
+const std::vector<std::string>& subgroupOperationNames() {
+  static const std::vector<std::string> names = {
+      "basic", "vote", "arithmetic", "ballot", "shuffle", "shuffle_relative", "clustered", "quad"};
+  return names;
+}
+
+std::vector<PassForm> formsOf(const Pass& pass) {
+  std::vector<PassForm> out{{pass.form, pass.formNeeds, pass.spirv, pass.glsl, pass.localSize, pass.dispatch}};
+  out.insert(out.end(), pass.forms.begin(), pass.forms.end());
+  return out;
+}
+
+Pass withForm(Pass pass, const PassForm& form) {
+  pass.form = form.name;
+  pass.formNeeds = form.needs;
+  pass.spirv = form.spirv;
+  pass.glsl = form.glsl;
+  pass.localSize = form.localSize;
+  pass.dispatch = form.dispatch;
+  pass.forms.clear();
+  return pass;
+}
 
 void writeParameterBytes(const ParameterBlock& block, std::vector<uint8_t>& bytes) {
   bytes.assign(block.size, 0);
@@ -211,6 +288,7 @@ const char* toString(Access a) { return nameOf(a, kAccess); }
 const char* toString(DispatchMode m) { return nameOf(m, kModes); }
 const char* toString(ScalarType t) { return nameOf(t, kScalars); }
 const char* toString(SizeDomain d) { return nameOf(d, kDomains); }
+const char* toString(FormDevice d) { return nameOf(d, kDevices); }
 
 uint32_t bytesPerTexel(ImageFormat f) {
   switch (f) {
@@ -275,6 +353,18 @@ nlohmann::ordered_json toJson(const Manifest& m) {
     for (const auto& pc : p.pushConstants)
       pcs.push_back({{"name", pc.name}, {"offset", pc.offset}, {"type", toString(pc.type)}, {"value", pc.value}});
     if (p.parameters) e["parameters"] = parametersJson(*p.parameters);
+    if (!p.form.empty()) {
+      e["form"] = p.form;
+      e["needs"] = needsJson(p.formNeeds);
+      auto& fs = e["forms"] = nlohmann::ordered_json::array();
+      for (const PassForm& f : p.forms)
+        fs.push_back({{"form", f.name},
+                      {"needs", needsJson(f.needs)},
+                      {"spirv", f.spirv},
+                      {"glsl", f.glsl},
+                      {"local_size", f.localSize},
+                      {"dispatch", {{"size", sizeJson(f.dispatch.size)}, {"mode", toString(f.dispatch.mode)}}}});
+    }
     passes.push_back(std::move(e));
   }
   nlohmann::ordered_json shade;
@@ -326,6 +416,7 @@ Manifest manifestFromJson(const nlohmann::json& j) {
       p.pushConstants.push_back({get<std::string>(pc, "name"), get<uint32_t>(pc, "offset"),
                                  parseEnum(pc, "type", kScalars), get<double>(pc, "value")});
     if (e.contains("parameters")) p.parameters = parametersFromJson(e["parameters"], p.name);
+    formsFromJson(e, p);
     m.passes.push_back(std::move(p));
   }
   const auto& s = field(j, "shade");

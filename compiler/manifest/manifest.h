@@ -66,9 +66,11 @@ struct Binding {
 };
 
 enum class DispatchMode {
-  Texels,   // one invocation per texel of the domain extent (x, y)
-  Rows,     // one invocation per row (y); x covered by the shader's loop (SAT scans)
-  Columns,  // one invocation per column (x)
+  Texels,        // one invocation per texel of the domain extent (x, y)
+  Rows,          // one invocation per row (y); x covered by the shader's loop (SAT scans)
+  Columns,       // one invocation per column (x)
+  RowGroups,     // one workgroup per row: h groups, gl_WorkGroupID.x = row (parallel scans)
+  ColumnGroups,  // one workgroup per column: w groups, gl_WorkGroupID.x = column
 };
 struct Dispatch {
   SizeRule size;
@@ -106,6 +108,27 @@ struct ParameterBlock {
 };
 inline constexpr const char* kParametersBinding = "parameters";
 
+// Pass forms (docs/manifest.md "Pass forms"): a pass may come in more than one form, each its
+// own shader with the same bindings and bit-identical results (a serial scan for a CPU device, a
+// work-efficient one for a GPU). The executor picks one from the device's properties, by what each
+// form declares here, never by what the pass does.
+enum class FormDevice { Any, Cpu, Gpu };  // the device type a form is meant for
+struct FormNeeds {
+  FormDevice device = FormDevice::Any;          // preferred device type (auto choice only)
+  uint32_t subgroupSizeMin = 0;                 // hard: the device's subgroup size must be at least this
+  std::vector<std::string> subgroupOperations;  // hard: compute-stage subgroup operations ("arithmetic", ...)
+  friend bool operator==(const FormNeeds&, const FormNeeds&) = default;
+};
+struct PassForm {
+  std::string name;  // unique within the pass, e.g. "serial", "parallel"
+  FormNeeds needs;
+  std::string spirv, glsl;
+  std::array<uint32_t, 3> localSize{8, 8, 1};
+  Dispatch dispatch;
+};
+// The subgroup operation names a form may need, as VkSubgroupFeatureFlagBits spells them.
+const std::vector<std::string>& subgroupOperationNames();
+
 struct Pass {
   std::string name;   // unique, e.g. "sat_rows", "minmax_level3", "shade"
   std::string kind;   // what it does, for reports only: "moments", "blur", "sat", "minmax", "shade", ...
@@ -116,7 +139,18 @@ struct Pass {
   std::vector<Binding> bindings;
   std::vector<PushConstant> pushConstants;
   std::optional<ParameterBlock> parameters;  // generic shaders only (JSON "parameters", absent otherwise)
+  // A pass with several forms: `form` names the one given by the fields above (spirv, glsl,
+  // localSize, dispatch) and `formNeeds` what it needs; `forms` holds the others. Empty form =
+  // the pass has one form (JSON keys "form", "needs", "forms" absent).
+  std::string form;
+  FormNeeds formNeeds;
+  std::vector<PassForm> forms;
 };
+
+// Every form of a pass, its own first; one unnamed form when the pass has a single one.
+std::vector<PassForm> formsOf(const Pass& pass);
+// The pass run as `form`: its spirv, glsl, local size and dispatch, no alternatives left.
+Pass withForm(Pass pass, const PassForm& form);
 
 // The includable lookup function for engines (docs/integration.md "The lookup's interface").
 struct ShadeInterface {
@@ -157,6 +191,7 @@ const char* toString(Access a);
 const char* toString(DispatchMode m);
 const char* toString(ScalarType t);
 const char* toString(SizeDomain d);
+const char* toString(FormDevice d);
 uint32_t bytesPerTexel(ImageFormat f);
 // Width and height of a size rule, given the shadow-map size (square) and the screen size.
 std::array<uint32_t, 2> extentOf(const SizeRule& rule, uint32_t mapSize, uint32_t screenWidth, uint32_t screenHeight);

@@ -18,6 +18,7 @@ struct PassSource {
   std::string templatePath;  // relative to templates/, e.g. "passes/sat_rows.comp"
   std::string stem;          // output file stem: <stem>.glsl, <stem>.spv
   Specialization values;
+  std::vector<PassSource> forms;  // forms[k] builds the pass's forms[k] (manifest.h "Pass forms")
 };
 
 struct PassGraph {

@@ -71,6 +71,13 @@ std::string printValue(const SpecValue& value) {
   return std::visit(Print{}, value);
 }
 
+std::string needs(const FormNeeds& n) {
+  std::string out = fmt::format("needs device {}", toString(n.device));
+  if (n.subgroupSizeMin) out += fmt::format(" subgroup_size >= {}", n.subgroupSizeMin);
+  for (const std::string& op : n.subgroupOperations) out += " subgroup " + op;
+  return out;
+}
+
 std::string printPassGraph(const PassGraph& graph) {
   const Manifest& m = graph.manifest;
   std::string out = fmt::format("; shadowc pass graph, filter {}: {} images, {} passes\n", m.filter, m.images.size(),
@@ -88,6 +95,7 @@ std::string printPassGraph(const PassGraph& graph) {
     for (const Binding& b : p.bindings)
       out += fmt::format("  binding {} {} {}{}\n", b.binding, b.image, toString(b.access),
                          b.level >= 0 ? fmt::format(" level {}", b.level) : "");
+    if (!p.form.empty()) out += "  form " + p.form + " " + needs(p.formNeeds) + "\n";
     if (i >= graph.sources.size()) continue;
     for (const Constant& c : graph.sources[i].values.constants)
       out += fmt::format("  value {} {}\n", c.name, printValue(c.value));
@@ -101,6 +109,16 @@ std::string printPassGraph(const PassGraph& graph) {
                            m.stride ? fmt::format(" [{}] stride {}", m.count, m.stride) : std::string(), vs,
                            m.values.size() > 8 ? " ..." : "");
       }
+    }
+    // The other forms: their own template, dispatch and values (same bindings).
+    for (size_t k = 0; k < p.forms.size() && k < graph.sources[i].forms.size(); ++k) {
+      const PassForm& f = p.forms[k];
+      const PassSource& src = graph.sources[i].forms[k];
+      out += fmt::format("  form {} {} template {} stem {} local {}x{}x{} dispatch {} {}\n", f.name, needs(f.needs),
+                         src.templatePath, src.stem, f.localSize[0], f.localSize[1], f.localSize[2],
+                         toString(f.dispatch.mode), size(f.dispatch.size));
+      for (const Constant& c : src.values.constants)
+        out += fmt::format("    value {} {}\n", c.name, printValue(c.value));
     }
   }
   return out;

@@ -57,6 +57,10 @@ std::array<uint32_t, 3> dispatchGroups(const Pass& pass, uint32_t mapSize, uint3
       return {ceilDiv(h, lx), 1, 1};
     case DispatchMode::Columns:
       return {ceilDiv(w, lx), 1, 1};
+    case DispatchMode::RowGroups:
+      return {h, 1, 1};
+    case DispatchMode::ColumnGroups:
+      return {w, 1, 1};
   }
   return {1, 1, 1};
 }
@@ -95,6 +99,7 @@ struct PassExecutor::Impl {
   std::vector<PassResource> passes;
   UniqueQueryPool queries;
   VkCommandBuffer cmd = VK_NULL_HANDLE;
+  std::vector<FormChoice> formChoices;
 
   Impl(VulkanContext& c, const Manifest& m, uint32_t map, uint32_t w, uint32_t h)
       : ctx(c), manifest(m), mapSize(map), width(w), height(h) {}
@@ -451,8 +456,11 @@ struct PassExecutor::Impl {
 };
 
 PassExecutor::PassExecutor(VulkanContext& ctx, const CompiledPasses& compiled, uint32_t mapSize, uint32_t screenWidth,
-                           uint32_t screenHeight)
-    : impl_(std::make_unique<Impl>(ctx, compiled.manifest, mapSize, screenWidth, screenHeight)) {
+                           uint32_t screenHeight, const std::string& passForm) {
+  ChosenForms chosen =
+      chooseForms(compiled.manifest, deviceTraits(ctx), passForm.empty() ? passFormFromEnvironment() : passForm);
+  impl_ = std::make_unique<Impl>(ctx, chosen.manifest, mapSize, screenWidth, screenHeight);
+  impl_->formChoices = std::move(chosen.choices);
   const Manifest& manifest = compiled.manifest;
   if (manifest.formatVersion != kManifestFormatVersion)
     throw ExecutorError(
@@ -469,6 +477,8 @@ PassExecutor::PassExecutor(VulkanContext& ctx, const CompiledPasses& compiled, u
 PassExecutor::~PassExecutor() = default;
 
 const Manifest& PassExecutor::manifest() const { return impl_->manifest; }
+
+const std::vector<FormChoice>& PassExecutor::formChoices() const { return impl_->formChoices; }
 
 std::string PassExecutor::imageWithRole(ImageRole role) const {
   for (const auto& im : impl_->manifest.images)

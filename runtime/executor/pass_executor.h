@@ -14,6 +14,7 @@
 #include "manifest/frame_uniforms.h"
 #include "manifest/manifest.h"
 #include "runtime/executor/host_image.h"
+#include "runtime/executor/pass_forms.h"
 
 namespace shadowc::rt {
 
@@ -45,7 +46,9 @@ double median(std::vector<double> v);
 
 // Workgroup counts for a pass: Texels -> ceil(w/lx) x ceil(h/ly); Rows -> one invocation per
 // row along x (gl_GlobalInvocationID.x = row), ceil(h/lx) groups; Columns -> one per column,
-// ceil(w/lx) groups. z is always 1 (layered passes loop over layers in the shader).
+// ceil(w/lx) groups; RowGroups -> one workgroup per row (h groups, gl_WorkGroupID.x = row);
+// ColumnGroups -> one per column (w groups). z is always 1 (layered passes loop over layers in
+// the shader).
 std::array<uint32_t, 3> dispatchGroups(const Pass& pass, uint32_t mapSize, uint32_t screenWidth, uint32_t screenHeight);
 // Mip levels of an image: mipLevels, or the full chain when 0.
 uint32_t mipLevelCount(const ImageDesc& image, uint32_t width, uint32_t height);
@@ -55,8 +58,10 @@ class PassExecutor {
   // The SPIR-V comes from memory: the driver's artifact (driver::Artifact::passes()) or a
   // directory read by CompiledPasses::fromDirectory. Most callers want the run harness
   // (runtime/harness/run_harness.h), which also uploads the inputs by role.
+  // `passForm` picks among the forms of passes that have several (pass_forms.h): "auto", a form
+  // name, or "" for the environment's SHADOWC_PASS_FORM (else auto).
   PassExecutor(VulkanContext& ctx, const CompiledPasses& compiled, uint32_t mapSize, uint32_t screenWidth,
-               uint32_t screenHeight);
+               uint32_t screenHeight, const std::string& passForm = "");
   ~PassExecutor();
   PassExecutor(const PassExecutor&) = delete;
   PassExecutor& operator=(const PassExecutor&) = delete;
@@ -69,7 +74,9 @@ class PassExecutor {
   TimingResult time(int warmup, int runs);
   HostImage download(const std::string& image, uint32_t level = 0, uint32_t layer = 0);
 
-  const Manifest& manifest() const;
+  const Manifest& manifest() const;  // as run: each pass in its chosen form
+  // The form each pass with several forms runs, manifest order (empty when none has forms).
+  const std::vector<FormChoice>& formChoices() const;
   // Names of the images with a role (the harness's inputs/outputs); empty when absent.
   std::string imageWithRole(ImageRole role) const;
 

@@ -48,7 +48,8 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
   if (options.warmup < 0 || options.runs < 0) throw ExecutorError("warm-up and timed run counts must be >= 0");
   RunOutputs out;
   const auto start = std::chrono::steady_clock::now();
-  PassExecutor ex(ctx, passes, inputs.mapSize, inputs.width, inputs.height);
+  PassExecutor ex(ctx, passes, inputs.mapSize, inputs.width, inputs.height, options.passForm);
+  out.forms = ex.formChoices();
   out.pipelineCreateMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 
   const std::string output = setInputs(ex, passes, inputs);
@@ -70,7 +71,8 @@ std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<
   std::vector<std::unique_ptr<PassExecutor>> ex;
   for (const TimedRun& r : runs) {
     if (!r.passes || !r.inputs) throw ExecutorError("interleaved timing: a run without passes or inputs");
-    ex.push_back(std::make_unique<PassExecutor>(ctx, *r.passes, r.inputs->mapSize, r.inputs->width, r.inputs->height));
+    ex.push_back(std::make_unique<PassExecutor>(ctx, *r.passes, r.inputs->mapSize, r.inputs->width, r.inputs->height,
+                                                r.passForm));
     setInputs(*ex.back(), *r.passes, *r.inputs);
   }
   for (auto& e : ex)

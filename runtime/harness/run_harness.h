@@ -35,6 +35,7 @@ struct RunOptions {
   int warmup = 0;                      // untimed runs first (lavapipe JIT-compiles on the first dispatch)
   int runs = 0;                        // timed runs; 0 = one untimed run, no timing
   std::vector<std::string> downloads;  // intermediate images to read back (level 0, layer 0)
+  std::string passForm;                // the form of passes with several: "" = SHADOWC_PASS_FORM or auto (pass_forms.h)
 };
 
 struct RunOutputs {
@@ -42,6 +43,7 @@ struct RunOutputs {
   std::optional<TimingResult> timing;       // when runs > 0
   std::map<std::string, HostImage> images;  // the requested downloads
   double pipelineCreateMs = 0;              // executor construction (pipelines, images, descriptors)
+  std::vector<FormChoice> forms;            // the form each pass with several ran (pass_forms.h)
 };
 
 RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const RunInputs& inputs,
@@ -55,6 +57,7 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
 struct TimedRun {
   const CompiledPasses* passes = nullptr;
   const RunInputs* inputs = nullptr;
+  std::string passForm;  // as RunOptions::passForm
 };
 std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup,
                                           int rounds);

@@ -23,6 +23,7 @@
   X(vkDestroyInstance)                         \
   X(vkEnumeratePhysicalDevices)                \
   X(vkGetPhysicalDeviceProperties)             \
+  X(vkGetPhysicalDeviceProperties2)            \
   X(vkGetPhysicalDeviceQueueFamilyProperties)  \
   X(vkGetPhysicalDeviceMemoryProperties)       \
   X(vkGetPhysicalDeviceFormatProperties)       \

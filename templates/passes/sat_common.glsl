@@ -1,5 +1,5 @@
-// sat_common.glsl — the summed-area table's storage conventions, shared by sat_rows.comp,
-// sat_columns.comp and the lookups that read the `sat` image.
+// sat_common.glsl — the summed-area table's storage conventions and summation order, shared by
+// both forms of the scans (sat_rows*.comp, sat_columns*.comp) and the lookups that read `sat`.
 //   SHADOWC_SAT_KIND 1 int32:         uint32 16.16 fixed point, v in [0,1] -> uint(round(v * 65536)),
 //                                     sums wrap mod 2^32: box sums stay exact while each box sum fits
 //                                     in 32 bits (Lauritzen 2007 via vssm-yang2010 sec. 6.4)
@@ -28,7 +28,10 @@ uvec4 shadowc_satEncode(vec4 v) { return uvec4(roundEven(clamp(v, 0.0, 1.0) * 65
 #elif SHADOWC_SAT_KIND == 2
 #define SHADOWC_SAT_VALUE vec4
 #define SHADOWC_SAT_IMAGE image2DArray
-vec4 shadowc_satEncode(vec4 v) { return v - 0.5; }
+vec4 shadowc_satEncode(vec4 v) {
+  precise vec4 e = v - 0.5;
+  return e;
+}
 #else
 #define SHADOWC_SAT_VALUE vec4
 #define SHADOWC_SAT_IMAGE image2DArray
@@ -46,5 +49,43 @@ vec4 shadowc_satEncode(vec4 v) { return v; }
 // column that is not a whole number of batches ends one texel at a time. Same sums in the same
 // order: the table is bit-identical.
 #define SHADOWC_SAT_BATCH 8
+
+// The blocked order (Nehab et al. 2011, blocked prefix sums): each scan comes in two forms, the
+// serial one above (sat_rows.comp, sat_columns.comp: one invocation per row or column, for CPU
+// devices) and a parallel one (sat_rows_parallel.comp, sat_columns_parallel.comp: a workgroup of
+// SHADOWC_SAT_TILE_CHUNKS invocations per row or column, for GPUs; docs/manifest.md "Pass forms").
+// int32 sums mod 2^32 are exact in any order, fp32 sums are not, so both forms add in this one
+// order and give bit-identical tables: a row (column) is cut into chunks of SHADOWC_SAT_BATCH
+// texels, SHADOWC_SAT_GROUP_CHUNKS chunks make a group and as many groups a tile (2048 texels).
+// Texel j of a chunk stores
+//   ((tileCarry + groupCarry) + chunkCarry) + local_j
+// where local_j = the chunk's texels 0..j added left to right from 0, chunkCarry = the totals of
+// the chunks before it in its group added left to right from 0, groupCarry the same over the
+// group totals before its group in the tile, tileCarry over the tile totals before its tile. The
+// serial form keeps the three carries as it walks (shadowc_satCarry: one more add per texel than
+// a plain running sum, none more image access); the parallel form gives each invocation a chunk
+// and folds the carries in shared memory (sat_tiles.glsl). Every sum is `precise` (no
+// contraction, no reassociation), so the fp32 order is the written one.
+#define SHADOWC_SAT_GROUP_CHUNKS 16
+#define SHADOWC_SAT_TILE_CHUNKS 256  // SHADOWC_SAT_GROUP_CHUNKS^2, a literal: it is the local size
+#if SHADOWC_SAT_TILE_CHUNKS != SHADOWC_SAT_GROUP_CHUNKS * SHADOWC_SAT_GROUP_CHUNKS
+#error "a tile is SHADOWC_SAT_GROUP_CHUNKS groups of SHADOWC_SAT_GROUP_CHUNKS chunks"
+#endif
+
+// The serial form's carries after chunk `chunk` (counted from 0 along the row or column), whose
+// local sum over all its texels is `total`.
+void shadowc_satCarry(int chunk, SHADOWC_SAT_VALUE total, inout SHADOWC_SAT_VALUE tileCarry,
+                      inout SHADOWC_SAT_VALUE groupCarry, inout SHADOWC_SAT_VALUE chunkCarry) {
+  precise SHADOWC_SAT_VALUE c = chunkCarry + total;
+  chunkCarry = c;
+  if ((chunk + 1) % SHADOWC_SAT_GROUP_CHUNKS != 0) return;
+  precise SHADOWC_SAT_VALUE g = groupCarry + chunkCarry;
+  groupCarry = g;
+  chunkCarry = SHADOWC_SAT_VALUE(0);
+  if ((chunk + 1) % SHADOWC_SAT_TILE_CHUNKS != 0) return;
+  precise SHADOWC_SAT_VALUE t = tileCarry + groupCarry;
+  tileCarry = t;
+  groupCarry = SHADOWC_SAT_VALUE(0);
+}
 
 #endif
