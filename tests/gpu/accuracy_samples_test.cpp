@@ -144,11 +144,13 @@ TEST_P(AccuracyTest, AgainstEmbreeReference) {
     EXPECT_EQ(m.nonFinite, 0u);
     EXPECT_EQ(m.outOfRange, 0u);
     if (report)
-      fmt::print("ACCURACY_ROW\t{}{}\t{}\t{:.5f}\t{:.4f}\t{:.5f}\t{:.4f}\t{:.3f}\n", c.sample, c.replaceFrom ? " (size: scene copy)" : "", scene, m.rmse,
-                 boundOf(m.rmse), m.lightBleeding, boundOf(m.lightBleeding), m.maxAbsError);
+      fmt::print("ACCURACY_ROW\t{}{}\t{}\t{:.5f}\t{:.4f}\t{:.5f}\t{:.4f}\t{:.3f}\n", c.sample,
+                 c.replaceFrom ? " (size: scene copy)" : "", scene, m.rmse, boundOf(m.rmse), m.lightBleeding,
+                 boundOf(m.lightBleeding), m.maxAbsError);
     const Measured* t = measured(c.sample, scene);
     if (!t) {
-      ADD_FAILURE() << c.sample << " on " << scene << " is not in the measured table: scripts/accuracy_report.py --only bounds";
+      ADD_FAILURE() << c.sample << " on " << scene
+                    << " is not in the measured table: scripts/accuracy_report.py --only bounds";
       continue;
     }
     EXPECT_LE(m.rmse, boundOf(t->rmse)) << "bleeding " << m.lightBleeding;
@@ -251,7 +253,8 @@ TEST(AccuracyCoverage, TheDocsBoundsAreTheFormulaOfTheTable) {
   ASSERT_NE(from, std::string::npos);
   ASSERT_NE(to, std::string::npos);
   std::istringstream lines(doc.substr(from, to - from));
-  const std::regex row(R"(^\| (\w+)(?: \(size: scene copy\))? \| (\w+) \| ([0-9.]+) \| ([0-9.]+) \| ([0-9.]+) \| ([0-9.]+) \|)");
+  const std::regex row(
+      R"(^\| (\w+)(?: \(size: scene copy\))? \| (\w+) \| ([0-9.]+) \| ([0-9.]+) \| ([0-9.]+) \| ([0-9.]+) \|)");
   size_t seen = 0;
   for (std::string line; std::getline(lines, line);) {
     std::smatch m;

@@ -77,7 +77,8 @@ TEST_F(StabilityNothingComparedTest, APlantedNanCaseFailsInTheSuite) {
     return r;
   };
   const FilterSpec spec = validation::libraryFilter("pcf_grid3", "depth\nsampling grid(3x3)");
-  const validation::StabilityCase planted = validation::makeCase("planted_nan", "a row with a NaN error", {spec}, {}, run);
+  const validation::StabilityCase planted =
+      validation::makeCase("planted_nan", "a row with a NaN error", {spec}, {}, run);
   const auto rs = validation::runCase(ctx, planted);
   ASSERT_EQ(rs.size(), 1u);
   EXPECT_FALSE(rs[0].pass) << rs[0].detail;

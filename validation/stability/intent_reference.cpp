@@ -597,8 +597,8 @@ static std::optional<Receiver> normalOffsetReceiver(const FilterSpec& s, const L
   }
   if (!(q[2] > 0)) return std::nullopt;
   const double scale = light.projection == Projection::Spot ? q[2] * light.tanHalfFov : light.halfExtent;
-  Receiver moved{0.5 + 0.5 * q[0] / scale, 0.5 + 0.5 * q[1] / scale,
-                 (q[2] - light.nearZ) / (light.farZ - light.nearZ), n, q};
+  Receiver moved{0.5 + 0.5 * q[0] / scale, 0.5 + 0.5 * q[1] / scale, (q[2] - light.nearZ) / (light.farZ - light.nearZ),
+                 n, q};
   return moved;
 }
 

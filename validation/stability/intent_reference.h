@@ -50,10 +50,10 @@ struct ReferenceForm {
 // kernel width lies within 2e-4 (relative) of a texel rounding boundary and fp32 may round either
 // way. Empty when the reference does not model the filter (mips, Poisson taps, PCSS search,
 // contact path, Lloyd splits, receiver-plane bias); the suite fails such a row (nothing compared). A
-// normal offset moves the receiver along its normal first, as bias.glsl does. Kernel widths take the form of the frame's
-// projection: frame.glsl (spot), frame_ortho.glsl (sun), frame_cube.glsl (point, in the
-// receiver's face, clamped to SHADOWC_CUBE_KERNEL_MAX); a PCSS with a grid blocker search and
-// grid PCF (pcss.glsl) is modelled, a Poisson one is not.
+// normal offset moves the receiver along its normal first, as bias.glsl does. Kernel widths take the form of the
+// frame's projection: frame.glsl (spot), frame_ortho.glsl (sun), frame_cube.glsl (point, in the receiver's face,
+// clamped to SHADOWC_CUBE_KERNEL_MAX); a PCSS with a grid blocker search and grid PCF (pcss.glsl) is modelled, a
+// Poisson one is not.
 class IntentReference {
  public:
   IntentReference(const FilterSpec& spec, const DepthMap& map, const LightFrame& light, ReferenceForm form = {});
