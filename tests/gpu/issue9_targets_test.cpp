@@ -55,11 +55,14 @@ TEST_F(Issue9TargetsTest, UniformKernelSampleMeetsTheReachableBounds) {
   EXPECT_LE(run("vssm_uniform_kernel", sample, "overlapping_occluders").rmse, 0.05);
 }
 
-// Sibling: the same sample with n = 8 sub-kernels per axis misses the contact bound (0.051).
-TEST_F(Issue9TargetsTest, EightSubKernelsMissTheContactBound) {
+// Sibling: the same sample with a constant bias instead of its receiver plane misses the contact
+// bound by a wide margin, measured 0.0919 (1.8x the bound; the receiver plane is what brings the
+// spheres' terminators under it). Not n = 8 sub-kernels: that misses by a hair (0.0513; n = 1, 2,
+// 4, 8, 16 measured 0.0457, 0.0471, 0.0491, 0.0513, 0.0522), and a sibling that close proves little.
+TEST_F(Issue9TargetsTest, ConstantBiasMissesTheContactBound) {
   const std::string sample = withSetting(withSetting(sampleSource("vssm_uniform_kernel"), "light", "area(size: scene)"),
-                                         "kernel", "uniform(n: 8)");
-  EXPECT_GT(run("vssm_uniform_kernel_n8", sample, "contact").rmse, 0.05);
+                                         "bias", "constant(0.001)");
+  EXPECT_GT(run("vssm_uniform_kernel_constant_bias", sample, "contact").rmse, 0.05);
 }
 
 }  // namespace

@@ -31,18 +31,22 @@ rt::Metrics run(const std::string& label, const std::string& source, const std::
 }
 
 // pcss_poisson's receiver plane with its slope clamped at 20 instead of the default 50: duck acne
-// 0.0052 with 50 (the sibling), measured 0.0039 now (RMSE 0.139 -> 0.138). The 3-degree grazing
-// floor (slope 19) stays inside the clamp: ReceiverPlaneBiasTest covers it with the default.
+// 0.0052 with 50 (the sibling), measured 0.0039 now. The 3-degree grazing floor (slope 19) stays
+// inside the clamp: ReceiverPlaneBiasTest covers it with the default.
+// The RMSE bound is the sibling's own RMSE (0.0907 with the clamp at 50; 0.0898 measured with 20):
+// the clamp was adopted because it removes acne without costing accuracy, so the check is that
+// comparison on the same scene and settings, not a margin on a number.
 TEST_F(MeshAcneTest, PcssSampleKeepsTheDuckUnderTheAcneBoundAtIssueSettings) {
   const std::string sample = sampleSource("pcss_poisson");
   ASSERT_NE(sample.find("max_slope: 20"), std::string::npos);
   const rt::Metrics m = run("pcss_poisson", sample, "duck");
+  const rt::Metrics clamp50 = run(
+      "pcss_duck_slope50", replacedBias("pcss_poisson", "receiver_plane(constant: 0.001, normal_offset: 2)"), "duck");
+  fmt::print("duck: max_slope 20 acne {:.4f} RMSE {:.4f}; 50 acne {:.4f} RMSE {:.4f}\n", m.overDarkening, m.rmse,
+             clamp50.overDarkening, clamp50.rmse);
   EXPECT_LE(m.overDarkening, kAcneBound);
-  EXPECT_LE(m.rmse, 0.145);
-  EXPECT_GT(run("pcss_duck_slope50", replacedBias("pcss_poisson", "receiver_plane(constant: 0.001, normal_offset: 2)"),
-                "duck")
-                .overDarkening,
-            kAcneBound);
+  EXPECT_LE(m.rmse, clamp50.rmse);
+  EXPECT_GT(clamp50.overDarkening, kAcneBound);
 }
 
 // pcf_poisson16's slope bias with its floor at 0.004: spider acne 0.0052 with the former 0.002

@@ -128,8 +128,10 @@ void addNaiveCases(std::vector<StabilityCase>& out) {
         r.naive = s.naiveUnguarded;
         // The naive pass writes eq. 4's raw blocker depth; a usable one lies in [0, t]
         // (t ~ 0.5), so the range check is [0, 1] as for visibility.
-        r.bound = s.naiveUnguarded ? INFINITY : 2e-3;
-        r.boundReason = s.naiveUnguarded ? "blocker depth must be finite and in [0, t]" : "as vssm_blocker_p_to_1";
+        r.bound = s.naiveUnguarded ? 0.0 : 2e-3;
+        r.boundReason = s.naiveUnguarded
+                            ? "raw blocker depth: its distance outside [0, 1] (finite and in [0, t] when usable)"
+                            : "as vssm_blocker_p_to_1";
         const double t = 0.5 + s.bias.constant;
         std::vector<Receiver> rs;
         for (double e : {0.0, 1e-6, 1e-5, 1e-4, 1e-3})
@@ -143,7 +145,7 @@ void addNaiveCases(std::vector<StabilityCase>& out) {
           lo = std::min(lo, v);
           hi = std::max(hi, v);
         }
-        r.worstError = NAN;
+        r.worstError = worstOutside(run.visibility);
         r.detail = fmt::format("raw eq. 4 blocker depths: min {:.4g}, max {:.4g}, {} non-finite of {}", lo, hi,
                                r.nonFinite, r.values);
         settle(r);

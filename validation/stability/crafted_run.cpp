@@ -112,6 +112,14 @@ std::array<double, 3> receiverPosition(const LightFrame& light, const Receiver& 
   throw std::runtime_error("a point light's receiver needs its position (cubeReceiver)");
 }
 
+std::array<double, 3> receiverNormal(const LightFrame& light, const Receiver& r) {
+  if (r.normal) return *r.normal;
+  if (light.projection == Projection::Sun) return {0.0, 0.0, -1.0};  // facing the sun
+  const auto p = receiverPosition(light, r);
+  const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+  return {-p[0] / len, -p[1] / len, -p[2] / len};
+}
+
 double gpuReceiverDepth(const LightFrame& light, const Receiver& r) {
   const auto p = receiverPosition(light, r);
   float z = float(p[2]);
@@ -168,15 +176,7 @@ CraftedResult runCrafted(rt::VulkanContext& ctx, const CompiledFilter& filter, c
   std::vector<float> pos(size_t(w) * h * 4, 0.0f), nrm(size_t(w) * h * 4, 0.0f);
   for (size_t i = 0; i < receivers.size(); ++i) {
     const auto p = receiverPosition(light, receivers[i]);
-    std::array<double, 3> n;
-    if (receivers[i].normal) {
-      n = *receivers[i].normal;
-    } else if (light.projection == Projection::Sun) {
-      n = {0.0, 0.0, -1.0};  // facing the sun
-    } else {
-      const double len = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
-      n = {-p[0] / len, -p[1] / len, -p[2] / len};
-    }
+    const std::array<double, 3> n = receiverNormal(light, receivers[i]);
     for (int c = 0; c < 3; ++c) {
       pos[i * 4 + c] = float(p[c]);
       nrm[i * 4 + c] = float(n[c]);

@@ -77,6 +77,9 @@ DepthMap constantMap(uint32_t size, float d);
 ShadowcFrame makeFrame(const LightFrame& light, uint32_t mapSize, uint32_t screenW, uint32_t screenH);
 // World (= light view) position of a receiver, in double and as the GPU sees it (fp32).
 std::array<double, 3> receiverPosition(const LightFrame& light, const Receiver& r);
+// The receiver's normal as runCrafted writes it: its own, else facing the light (its centre; a
+// sun: -z).
+std::array<double, 3> receiverNormal(const LightFrame& light, const Receiver& r);
 // The normalized depth the shade pass computes for the receiver (fp32 arithmetic of frame.glsl,
 // frame_ortho.glsl, frame_cube.glsl).
 double gpuReceiverDepth(const LightFrame& light, const Receiver& r);

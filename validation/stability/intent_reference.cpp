@@ -540,8 +540,7 @@ std::vector<double> MomentsField::texel(int x, int y, int layer) const {
 }
 
 bool intentModels(const FilterSpec& s) {
-  if (s.contact.enabled || s.bias.kind == BiasKind::NormalOffset || s.bias.kind == BiasKind::ReceiverPlane)
-    return false;
+  if (s.contact.enabled || s.bias.kind == BiasKind::ReceiverPlane) return false;
   if (s.representation == Representation::Depth)
     return s.sampling.pattern == PcfPattern::Grid &&
            (s.blocker.kind == BlockerKind::None ||
@@ -576,6 +575,33 @@ static bool lightBehind(const LightFrame& light, double w, const std::array<doub
   return toLight + h * (std::fabs(n[0]) + std::fabs(n[1])) <= 0;
 }
 
+// bias.glsl shadowc_biasedLightPosition: the receiver moved along its normal by SHADOWC_NORMAL_OFFSET
+// texels, a texel being 2 z tanHalfFov / mapSize world units at the receiver's depth z (spot),
+// 2 halfExtent / mapSize (sun), 2 z_f tanHalfFov / (mapSize / 3) in its cube face (point). Its uv
+// and depth are those of the moved point (frame.glsl, frame_ortho.glsl, frame_cube.glsl); nullopt
+// when the moved point lies behind a spot or sun light (the shader calls it lit).
+static std::optional<Receiver> normalOffsetReceiver(const FilterSpec& s, const LightFrame& light, uint32_t mapSize,
+                                                    const Receiver& r) {
+  const auto p = receiverPosition(light, r);
+  const auto n = receiverNormal(light, r);
+  double texelWorld = 2 * light.halfExtent / mapSize;
+  if (light.projection == Projection::Spot) texelWorld = 2 * std::max(p[2], 0.0) * light.tanHalfFov / mapSize;
+  if (light.projection == Projection::Point)
+    texelWorld = 2 * cubeFaceCoords(cubeFace(p), p)[2] * light.tanHalfFov / double(mapSize / 3);
+  const double k = s.bias.normalOffset * texelWorld;
+  const std::array<double, 3> q = {p[0] + k * n[0], p[1] + k * n[1], p[2] + k * n[2]};
+  if (light.projection == Projection::Point) {
+    Receiver moved = cubeReceiver(light, mapSize, q);
+    moved.normal = n;
+    return moved;
+  }
+  if (!(q[2] > 0)) return std::nullopt;
+  const double scale = light.projection == Projection::Spot ? q[2] * light.tanHalfFov : light.halfExtent;
+  Receiver moved{0.5 + 0.5 * q[0] / scale, 0.5 + 0.5 * q[1] / scale, (q[2] - light.nearZ) / (light.farZ - light.nearZ),
+                 n, q};
+  return moved;
+}
+
 IntentReference::IntentReference(const FilterSpec& spec, const DepthMap& map, const LightFrame& light,
                                  ReferenceForm form)
     : spec_(spec), map_(map), light_(light), form_(form) {
@@ -584,17 +610,25 @@ IntentReference::IntentReference(const FilterSpec& spec, const DepthMap& map, co
 }
 IntentReference::~IntentReference() = default;
 
-std::vector<double> IntentReference::operator()(const Receiver& r) const {
+std::vector<double> IntentReference::operator()(const Receiver& given) const {
   const FilterSpec& s = spec_;
   const DepthMap& map = map_;
   const LightFrame& light = light_;
   if (!intentModels(s)) return {};
-  const auto p = receiverPosition(light, r);
   const bool sun = light.projection == Projection::Sun, cube = light.projection == Projection::Point;
   // shadowc_lookup.glsl shadowc_lightBehind: no part of the light in front of the receiver's
   // tangent plane -> the shadowing term's 0, before anything else (even outside the frustum).
   const double lightWidth = shaderLightWidth(s, light);
-  if (s.backfaceShadowed && r.normal && lightBehind(light, lightWidth, p, *r.normal)) return {0.0};
+  if (s.backfaceShadowed && given.normal &&
+      lightBehind(light, lightWidth, receiverPosition(light, given), *given.normal))
+    return {0.0};
+  Receiver r = given;
+  if (s.bias.kind == BiasKind::NormalOffset) {
+    const std::optional<Receiver> moved = normalOffsetReceiver(s, light, map.size, given);
+    if (!moved) return {1.0};
+    r = *moved;
+  }
+  const auto p = receiverPosition(light, r);
   // Outside the shadow map's frustum nothing was rendered that could shadow it (lit).
   if (!(r.u >= 0 && r.u <= 1 && r.v >= 0 && r.v <= 1)) return {1.0};
   Geometry g;

@@ -16,7 +16,7 @@
 
 namespace shadowc::validation {
 
-// Whether IntentReference models this filter (else the suite checks only finiteness and range).
+// Whether IntentReference models this filter (else a row of it compares nothing and fails).
 bool intentModels(const FilterSpec& spec);
 
 // Exact per-channel means of the warped moments (before any blur) over an inclusive rectangle
@@ -49,10 +49,11 @@ struct ReferenceForm {
 // operator() gives the reference values for one receiver: usually one; two or three where a
 // kernel width lies within 2e-4 (relative) of a texel rounding boundary and fp32 may round either
 // way. Empty when the reference does not model the filter (mips, Poisson taps, PCSS search,
-// contact path, Lloyd splits, normal offset). Kernel widths take the form of the frame's
-// projection: frame.glsl (spot), frame_ortho.glsl (sun), frame_cube.glsl (point, in the
-// receiver's face, clamped to SHADOWC_CUBE_KERNEL_MAX); a PCSS with a grid blocker search and
-// grid PCF (pcss.glsl) is modelled, a Poisson one is not.
+// contact path, Lloyd splits, receiver-plane bias); the suite fails such a row (nothing compared). A
+// normal offset moves the receiver along its normal first, as bias.glsl does. Kernel widths take the form of the
+// frame's projection: frame.glsl (spot), frame_ortho.glsl (sun), frame_cube.glsl (point, in the receiver's face,
+// clamped to SHADOWC_CUBE_KERNEL_MAX); a PCSS with a grid blocker search and grid PCF (pcss.glsl) is modelled, a
+// Poisson one is not.
 class IntentReference {
  public:
   IntentReference(const FilterSpec& spec, const DepthMap& map, const LightFrame& light, ReferenceForm form = {});

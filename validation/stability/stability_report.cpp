@@ -16,6 +16,9 @@ NaN/Inf, every value in [0, 1], and the worst error against a double-precision r
 (validation/stability/intent_reference.cpp: exact box means, double estimators, the same kernel
 geometry) within the bound written next to the case in the source, with its reason. Rows marked
 *naive* are the deliberately naive forms; they pass when they FAIL their case (the demonstration).
+A row that compares nothing (no receiver the reference models) fails, naive or not. The random
+rows (`random_seed*`) and the raw blocker depths of `vssm_blocker_unguarded` have no reference:
+their worst error is the largest distance of a value outside [0, 1], bound 0.
 `tests/stability` runs the same cases as gtest cases with the Vulkan validation layers on.
 
 )";

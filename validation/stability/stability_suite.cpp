@@ -81,8 +81,24 @@ void countValues(CaseResult& r, const std::vector<float>& values, double lo, dou
 }
 
 void settle(CaseResult& r) {
+  // A NaN error is a row that compared nothing: it proves nothing either way, naive or not.
+  if (std::isnan(r.worstError)) {
+    r.pass = false;
+    if (r.detail.rfind("nothing compared", 0) != 0)
+      r.detail = "nothing compared" + (r.detail.empty() ? std::string() : ": " + r.detail);
+    return;
+  }
   const bool clean = r.nonFinite == 0 && r.outOfRange == 0 && !(r.worstError > r.bound);
   r.pass = r.naive ? !clean : clean;
+}
+
+double worstOutside(const std::vector<float>& values, double lo, double hi) {
+  double worst = 0;
+  for (float v : values) {
+    if (!std::isfinite(v)) return INFINITY;
+    worst = std::max({worst, lo - double(v), double(v) - hi});
+  }
+  return worst;
 }
 
 CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, const DepthMap& map,
@@ -92,10 +108,12 @@ CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, con
   const CraftedResult run = runCrafted(ctx.vk, cf, map, receivers, light);
   countValues(r, run.visibility);
   const IntentReference reference(spec, map, light, form);
-  r.worstError = intentModels(spec) ? 0.0 : NAN;
+  r.worstError = 0;
+  size_t compared = 0;
   for (size_t i = 0; i < receivers.size(); ++i) {
     const std::vector<double> ref = reference(receivers[i]);
     if (ref.empty()) continue;
+    ++compared;
     double err = INFINITY;
     for (double v : ref) err = std::min(err, std::fabs(double(run.visibility[i]) - v));
     if (std::isnan(double(run.visibility[i]))) err = INFINITY;
@@ -104,6 +122,10 @@ CaseResult evaluate(SuiteContext& ctx, CaseResult r, const FilterSpec& spec, con
       r.detail = fmt::format("worst: receiver {} (u {:.5f}, v {:.5f}, d {:.6g}) GPU {:.7g} vs reference {:.7g}", i,
                              receivers[i].u, receivers[i].v, receivers[i].d, run.visibility[i], ref[0]);
     }
+  }
+  if (compared == 0) {
+    r.worstError = NAN;
+    r.detail = intentModels(spec) ? "no receivers" : "the intent reference does not model this filter";
   }
   settle(r);
   return r;

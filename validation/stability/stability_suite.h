@@ -20,7 +20,7 @@ namespace shadowc::validation {
 
 struct CaseResult {
   std::string caseName, filter;
-  double worstError = 0;  // NaN when the reference does not model the filter
+  double worstError = 0;  // NaN: nothing was compared (the row fails)
   double bound = 0;
   std::string boundReason;
   uint64_t values = 0, nonFinite = 0, outOfRange = 0;
@@ -51,8 +51,13 @@ const std::vector<StabilityCase>& stabilityCases();
 // Runs a case on its own filters, or on `override` when it applies (else nothing).
 std::vector<CaseResult> runCase(SuiteContext& ctx, const StabilityCase& c, const FilterSpec* override = nullptr);
 
-// Finishes a result: pass = finite, in range and within bound (inverted for naive rows).
+// Finishes a result: pass = finite, in range and within bound (inverted for naive rows); a row
+// whose worst error is NaN compared nothing and fails, naive or not.
 void settle(CaseResult& r);
+
+// The largest distance of a value outside [lo, hi] (0 when all lie inside, infinite when one is
+// not finite): the measured error of a row checked against a range rather than a reference.
+double worstOutside(const std::vector<float>& values, double lo = 0.0, double hi = 1.0);
 
 // Report: the Markdown table and JSON of the results.
 std::string markdownTable(const std::vector<CaseResult>& results);
