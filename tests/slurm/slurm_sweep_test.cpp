@@ -1,9 +1,11 @@
 // A sweep as a 2-task Slurm job array on a single-node Slurm started here (local_slurm.sh:
-// munged, slurmctld, slurmd on localhost, stopped and removed at the end), merged, equals the
+// munged, slurmctld, slurmd on 127.0.0.1, stopped and removed at the end), merged, equals the
 // same sweep run in one process: same rows (keys, specs, content hashes, metrics), same skipped
-// variants, same frontier (times aside: each run measures its own times).
+// variants, same frontier (times aside: each run measures its own times). A cluster that does
+// not come up fails the test within local_slurm.sh's start bound, with the daemons' own errors.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -26,6 +28,11 @@ std::string shell(const std::string& cmd, int* code) {
   return out;
 }
 
+std::string lastLine(std::string s) {
+  while (!s.empty() && s.back() == '\n') s.pop_back();
+  return s.substr(s.rfind('\n') + 1);  // npos + 1 == 0: the whole text when it is one line
+}
+
 class LocalSlurm : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -33,7 +40,13 @@ class LocalSlurm : public ::testing::Test {
     int code = 0;
     const std::string out = shell(script_ + " start " + (dir_ / "cluster").string() + " 2>&1", &code);
     ASSERT_EQ(code, 0) << out;
-    conf_ = out.substr(0, out.find('\n'));
+    // The last line: munged may warn before it (e.g. that the host name does not resolve).
+    conf_ = lastLine(out);
+    ASSERT_TRUE(std::filesystem::exists(conf_)) << out;
+  }
+  std::string daemonLogs() {
+    int code = 0;
+    return shell(script_ + " logs " + (dir_ / "cluster").string() + " 2>&1", &code);
   }
   void TearDown() override {
     int code = 0;
@@ -67,19 +80,29 @@ TEST_F(LocalSlurm, JobArrayShardsMergedEqualOneProcess) {
   "screen": 32, "map": 256, "reference_samples": 2, "runs": 2, "warmup": 1
 })J";
   const std::string spec = (dir_ / "sweep.json").string();
+  const auto t0 = std::chrono::steady_clock::now();
+  const test::CliResult one = test::runShadowc("sweep " + spec + " -o " + (dir_ / "one").string());
+  ASSERT_EQ(one.code, 0) << one.err;
+  const auto oneS = std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - t0).count();
+  // Bound on the array: its 2 tasks may run one after the other (each asks for 2 CPUs), each
+  // doing no more than the whole sweep did in one process, doubled for the load changing in
+  // between; plus one periodic scheduling pass (sched_interval, 60 s) for a task the
+  // event-driven pass missed, and sbatch --wait's longest poll (32 s).
+  const long waitS = 2 * 2 * (oneS + 1) + 60 + 32;
   int code = 0;
   const std::string sbatch =
-      shell("SLURM_CONF=" + conf_ + " SHADOWC=" + SHADOWC_BINARY + " timeout 300 sbatch --array=0-1 --wait -o " +
-                (dir_ / "task-%a.log").string() + " " + (test::sourceDir() / "scripts/slurm/sweep.sbatch").string() +
-                " " + spec + " " + (dir_ / "shards").string() + " 2>&1",
+      shell("SLURM_CONF=" + conf_ + " SHADOWC=" + SHADOWC_BINARY + " timeout " + std::to_string(waitS) +
+                " sbatch --array=0-1 --wait -o " + (dir_ / "task-%a.log").string() + " " +
+                (test::sourceDir() / "scripts/slurm/sweep.sbatch").string() + " " + spec + " " +
+                (dir_ / "shards").string() + " 2>&1",
             &code);
-  ASSERT_EQ(code, 0) << sbatch << test::readFile(dir_ / "task-0.log") << test::readFile(dir_ / "task-1.log");
+  ASSERT_EQ(code, 0) << (code == 124 ? "sbatch --wait did not finish within " + std::to_string(waitS) + " s\n" : "")
+                     << sbatch << test::readFile(dir_ / "task-0.log") << test::readFile(dir_ / "task-1.log")
+                     << daemonLogs();
   const test::CliResult merge =
       test::runShadowc("sweep merge " + (dir_ / "shards/shard-0").string() + " " + (dir_ / "shards/shard-1").string() +
                        " -o " + (dir_ / "merged").string());
   ASSERT_EQ(merge.code, 0) << merge.err;
-  const test::CliResult one = test::runShadowc("sweep " + spec + " -o " + (dir_ / "one").string());
-  ASSERT_EQ(one.code, 0) << one.err;
 
   const sweep::Results s0 = sweep::readResultsJson(dir_ / "shards/shard-0/results.json");
   const sweep::Results s1 = sweep::readResultsJson(dir_ / "shards/shard-1/results.json");
