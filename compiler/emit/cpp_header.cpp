@@ -19,8 +19,8 @@ constexpr std::array<const char*, 12> kFormatNames{"R32F",        "RG32F",   "RG
                                                    "RGBA16Unorm", "R32UI",   "RG32UI",   "RGBA32UI"};
 constexpr std::array<const char*, 5> kRoleNames{"Internal", "InputDepth", "InputPosition", "InputNormal",
                                                 "OutputVisibility"};
-constexpr std::array<const char*, 6> kAccessNames{"Sampled", "StorageRead",       "StorageWrite", "StorageReadWrite",
-                                                  "Uniform", "StorageBufferRead"};
+constexpr std::array<const char*, 6> kAccessNames{"Sampled",          "StorageRead", "StorageWrite",
+                                                  "StorageReadWrite", "Uniform",     "StorageBufferRead"};
 constexpr std::array<const char*, 3> kModeNames{"Texels", "Rows", "Columns"};
 constexpr std::array<const char*, 3> kScalarNames{"U32", "I32", "F32"};
 constexpr std::array<const char*, 2> kDomainNames{"Map", "Screen"};
@@ -204,8 +204,8 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
   if (!m.buffers.empty()) {
     out += "inline constexpr Buffer buffers[] = {\n";
     for (size_t i = 0; i < m.buffers.size(); ++i)
-      out += fmt::format("    {{{}, {}, buffer{}_values, {}}},\n", quoted(m.buffers[i].name), m.buffers[i].components, i,
-                         m.buffers[i].values.size());
+      out += fmt::format("    {{{}, {}, buffer{}_values, {}}},\n", quoted(m.buffers[i].name), m.buffers[i].components,
+                         i, m.buffers[i].values.size());
     out += "};\n\n";
   }
 
@@ -235,7 +235,8 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
   out += bindingArray(m, "lookup_bindings", m.shade.bindings);
   out += fmt::format(
       "\ninline constexpr Filter filter{{\n    {}, {}, {},\n    images, sizeof images / sizeof images[0],\n"
-      "    passes, sizeof passes / sizeof passes[0],\n    {{{}, {}, {}, {}, {}, {}}},\n    {}, {}}};\n\n}}  // namespace "
+      "    passes, sizeof passes / sizeof passes[0],\n    {{{}, {}, {}, {}, {}, {}}},\n    {}, {}}};\n\n}}  // "
+      "namespace "
       "shadowc_filters::{}\n",
       quoted(m.filter), quoted(m.compilerVersion), quoted(m.contentHash), quoted(m.shade.glsl),
       quoted(m.shade.function), quoted(m.shade.signature), m.shade.set,

@@ -393,9 +393,9 @@ struct PassExecutor::Impl {
       if (b.access == Access::StorageBufferRead) {
         const auto it = buffers.find(b.image);
         if (it == buffers.end())
-          throw ExecutorError(fmt::format(
-              "pass '{}': binding {} names buffer '{}', which the manifest does not declare", pass.name, b.binding,
-              b.image));
+          throw ExecutorError(
+              fmt::format("pass '{}': binding {} names buffer '{}', which the manifest does not declare", pass.name,
+                          b.binding, b.image));
         bufferInfos.push_back({it->second.buffer, 0, VK_WHOLE_SIZE});
         w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
         w.pBufferInfo = &bufferInfos.back();

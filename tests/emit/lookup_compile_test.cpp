@@ -303,8 +303,8 @@ TEST(LookupCompileChecks, UnrolledQuadtreeHasNoLoopInItsTraversal) {
 TEST(LookupCompileChecks, LoopQuadtreeWalksAreBoundedByTheNodeCount) {
   for (const char* name : {"vssm_mixed_qt_table", "vssm_mixed_qt_computed"}) {
     const std::string pre = preprocessed(find(name));
-    EXPECT_NE(pre.find("step < 85"), std::string::npos) << name;  // height 3: (4^4 - 1) / 3 nodes
-    EXPECT_EQ(pre.find("const ivec"), std::string::npos) << name;     // no const table
+    EXPECT_NE(pre.find("step < 85"), std::string::npos) << name;   // height 3: (4^4 - 1) / 3 nodes
+    EXPECT_EQ(pre.find("const ivec"), std::string::npos) << name;  // no const table
     EXPECT_EQ(pre.find("shadowc_qtUnrolled"), std::string::npos) << name;
   }
   // The table walk reads the buffer; the computed one has none.

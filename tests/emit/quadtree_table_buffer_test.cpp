@@ -4,12 +4,12 @@
 // Sibling: `traversal: computed` has neither.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
 #include <algorithm>
 #include <cstring>
-#include <vector>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "backend/spirv_backend.h"
 #include "driver/driver.h"
@@ -19,8 +19,8 @@ namespace shadowc {
 namespace {
 
 driver::Result compileVssm(const std::string& kernel, const std::string& blocker = "moments") {
-  const std::string text = "filter qt {\n  moments linear\n  storage sat(int32)\n  blocker " + blocker +
-                           "\n  kernel " + kernel + "\n  fallback pcf(2x2)\n}\n";
+  const std::string text = "filter qt {\n  moments linear\n  storage sat(int32)\n  blocker " + blocker + "\n  kernel " +
+                           kernel + "\n  fallback pcf(2x2)\n}\n";
   return driver::compileSource(text, "qt.shadow");
 }
 
@@ -68,8 +68,8 @@ TEST(QuadtreeTableBuffer, TheManifestCarriesThePlannersTablesAndBindsThem) {
   EXPECT_EQ(b["components"], 4);
   EXPECT_EQ(b["values"].get<std::vector<int32_t>>(), quadtreeTableBuffer(buildQuadtreeTables(3)).values);
   EXPECT_EQ(b["values"].size(), 4u * 85);  // (4^4 - 1) / 3 nodes
-  const nlohmann::json binding = {{"binding", 10}, {"image", kQuadtreeTableBuffer}, {"access", "storage_buffer_read"},
-                                  {"level", -1}};
+  const nlohmann::json binding = {
+      {"binding", 10}, {"image", kQuadtreeTableBuffer}, {"access", "storage_buffer_read"}, {"level", -1}};
   const nlohmann::json& shade = m["passes"].back();
   ASSERT_EQ(shade["name"], "shade");
   EXPECT_NE(std::find(shade["bindings"].begin(), shade["bindings"].end(), binding), shade["bindings"].end());
@@ -83,8 +83,7 @@ TEST(QuadtreeTableBuffer, TheManifestCarriesThePlannersTablesAndBindsThem) {
 
 // One table serves both walks: the taller tree's (a blocker of height 5 over a kernel of 1).
 TEST(QuadtreeTableBuffer, TheTallerOfTheBlockerAndKernelTreesSizesTheTable) {
-  const driver::Result r =
-      compileVssm("quadtree(height: 1, traversal: table)", "moments(quadtree(height: 5))");
+  const driver::Result r = compileVssm("quadtree(height: 1, traversal: table)", "moments(quadtree(height: 5))");
   ASSERT_TRUE(r.ok) << r.log;
   ASSERT_EQ(r.artifact->manifest.buffers.size(), 1u);
   EXPECT_EQ(r.artifact->manifest.buffers[0].values, quadtreeTableBuffer(buildQuadtreeTables(5)).values);

@@ -7,8 +7,9 @@
 // Two filters (the sample at height 3, whose PCF leaves are deferred; heights 5 / 4 for the
 // kernel and the blocker, resolved in place and sharing the taller tree's table) on duck and
 // two_planes (64x64 screen, 256 map; duck's curved occluder is where kernels descend, two_planes'
-// flat one mostly has them accepted at the root; measured: bit-identical on all four). The sibling breaks the root's Child in the buffer the
-// harness uploads and must move the image past the tolerance: the shader really walks the table.
+// flat one mostly has them accepted at the root; measured: bit-identical on all four). The sibling breaks the root's
+// Child in the buffer the harness uploads and must move the image past the tolerance: the shader really walks the
+// table.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -38,7 +39,8 @@ std::vector<Case> cases() {
 }
 
 const CompiledFilter* compiled(const Case& c, const std::string& traversal) {
-  std::string text = withSetting(sampleSource("vssm_quadtree_table"), "kernel", fmt::format(fmt::runtime(c.kernel), traversal));
+  std::string text =
+      withSetting(sampleSource("vssm_quadtree_table"), "kernel", fmt::format(fmt::runtime(c.kernel), traversal));
   text = withSetting(text, "blocker", c.blocker);
   return compileFilterCached(fmt::format("qt_walk_{}_{}", c.label, traversal), text);
 }
