@@ -1,6 +1,6 @@
 // pipeline_bench: what compiling a filter costs, ours and the driver's (a benchmark, never a
 // test). For every sample and for the largest settings the checker accepts (quadtree heights
-// up to 5 for the kernel and the blocker, table and unrolled, uniform m and n, taps, layers):
+// up to 5 for the kernel and the blocker, table, computed and unrolled, uniform m and n, taps, layers):
 //   - the driver's in-process compile at -O (driver::compileSource, median of N),
 //   - lavapipe's pipeline creation through the run harness (RunOutputs::pipelineCreateMs), and
 //     each pass's first dispatch, which is where lavapipe JIT-compiles the shader with LLVM
@@ -44,13 +44,13 @@ struct Source {
 std::vector<Source> largestSettings() {
   const std::string vssm = "moments linear\n storage sat(int32)\n";
   std::vector<Source> out;
-  for (const char* traversal : {"table", "unrolled"})
+  for (const char* traversal : {"table", "computed", "unrolled"})
     for (int h = 1; h <= 5; ++h)
       out.push_back({fmt::format("max_kernel_qt{}_{}", h, traversal),
                      fmt::format("filter max_kernel_qt{0}_{1} {{\n {2} blocker moments\n kernel quadtree(height: {0}, "
                                  "traversal: {1})\n}}\n",
                                  h, traversal, vssm)});
-  for (const char* traversal : {"table", "unrolled"}) {
+  for (const char* traversal : {"table", "computed", "unrolled"}) {
     out.push_back({fmt::format("max_blocker_qt5_{}", traversal),
                    fmt::format("filter max_blocker_qt5_{0} {{\n {1} blocker moments(quadtree(height: 5))\n kernel "
                                "quadtree(height: 1, traversal: {0})\n}}\n",

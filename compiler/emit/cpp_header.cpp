@@ -19,8 +19,8 @@ constexpr std::array<const char*, 12> kFormatNames{"R32F",        "RG32F",   "RG
                                                    "RGBA16Unorm", "R32UI",   "RG32UI",   "RGBA32UI"};
 constexpr std::array<const char*, 5> kRoleNames{"Internal", "InputDepth", "InputPosition", "InputNormal",
                                                 "OutputVisibility"};
-constexpr std::array<const char*, 5> kAccessNames{"Sampled", "StorageRead", "StorageWrite", "StorageReadWrite",
-                                                  "Uniform"};
+constexpr std::array<const char*, 6> kAccessNames{"Sampled",          "StorageRead", "StorageWrite",
+                                                  "StorageReadWrite", "Uniform",     "StorageBufferRead"};
 constexpr std::array<const char*, 3> kModeNames{"Texels", "Rows", "Columns"};
 constexpr std::array<const char*, 3> kScalarNames{"U32", "I32", "F32"};
 constexpr std::array<const char*, 2> kDomainNames{"Map", "Screen"};
@@ -33,13 +33,14 @@ const char* nameOf(const std::array<const char*, N>& table, E e) {
 }
 
 // The shared declarations; bump the guard's number with any change to them.
-constexpr const char* kTypes = R"(#ifndef SHADOWC_GENERATED_TYPES_V1
-#define SHADOWC_GENERATED_TYPES_V1
+constexpr const char* kTypes = R"(#ifndef SHADOWC_GENERATED_TYPES_V2
+#define SHADOWC_GENERATED_TYPES_V2
 namespace shadowc_filters {
 enum class Format : std::uint32_t { R32F, RG32F, RGBA32F, R16F, RG16F, RGBA16F, R16Unorm, RG16Unorm, RGBA16Unorm,
                                     R32UI, RG32UI, RGBA32UI };
 enum class Role : std::uint32_t { Internal, InputDepth, InputPosition, InputNormal, OutputVisibility };
-enum class Access : std::uint32_t { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform };
+enum class Access : std::uint32_t { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform,
+                                    StorageBufferRead };
 enum class Domain : std::uint32_t { Map, Screen };      // extent = max(1, domain extent >> shift)
 enum class DispatchMode : std::uint32_t { Texels, Rows, Columns };
 enum class Scalar : std::uint32_t { U32, I32, F32 };
@@ -53,10 +54,16 @@ struct Image {
   Role role;
   bool linearFilter;
 };
+struct Buffer {  // a read-only storage buffer: upload `values` once (little-endian int32)
+  const char* name;
+  std::uint32_t components;  // int32 per element
+  const std::int32_t* values;
+  std::size_t valueCount;
+};
 struct Binding {
   std::uint32_t binding;
-  const char* image;  // image name, or "frame" (the ShadowcFrame uniform buffer)
-  int imageIndex;     // index into images, -1 for the frame buffer
+  const char* image;  // image name, "frame" (the ShadowcFrame uniform buffer) or a buffer's name
+  int imageIndex;     // index into images, or into buffers for StorageBufferRead; -1 for the frame
   Access access;
   int level;          // storage views: the mip level bound; -1 = level 0 / whole image
 };
@@ -91,6 +98,8 @@ struct Filter {
   const Pass* passes;
   std::size_t passCount;
   Lookup lookup;
+  const Buffer* buffers;
+  std::size_t bufferCount;
 };
 }  // namespace shadowc_filters
 #endif
@@ -123,9 +132,14 @@ std::string sizeRule(const SizeRule& r) {
   return fmt::format("{{Domain::{}, {}}}", nameOf(kDomainNames, r.domain), r.shift);
 }
 
-int imageIndex(const Manifest& m, const std::string& name) {
+int imageIndex(const Manifest& m, const Binding& b) {
+  if (b.access == Access::StorageBufferRead) {
+    for (size_t i = 0; i < m.buffers.size(); ++i)
+      if (m.buffers[i].name == b.image) return static_cast<int>(i);
+    return -1;
+  }
   for (size_t i = 0; i < m.images.size(); ++i)
-    if (m.images[i].name == name) return static_cast<int>(i);
+    if (m.images[i].name == b.image) return static_cast<int>(i);
   return -1;
 }
 
@@ -133,7 +147,7 @@ std::string bindingArray(const Manifest& m, const std::string& arrayName, const 
   if (bindings.empty()) return "";
   std::string out = fmt::format("inline constexpr Binding {}[] = {{\n", arrayName);
   for (const Binding& b : bindings)
-    out += fmt::format("    {{{}, {}, {}, Access::{}, {}}},\n", b.binding, quoted(b.image), imageIndex(m, b.image),
+    out += fmt::format("    {{{}, {}, {}, Access::{}, {}}},\n", b.binding, quoted(b.image), imageIndex(m, b),
                        nameOf(kAccessNames, b.access), b.level);
   return out + "};\n";
 }
@@ -180,6 +194,20 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
                        nameOf(kFormatNames, i.format), sizeRule(i.size), i.mipLevels, i.layers,
                        nameOf(kRoleNames, i.role), i.linearFilter ? "true" : "false");
   out += "};\n\n";
+  for (size_t i = 0; i < m.buffers.size(); ++i) {
+    const BufferDesc& b = m.buffers[i];
+    out += fmt::format("inline constexpr std::int32_t buffer{}_values[{}] = {{", i, b.values.size());
+    for (size_t k = 0; k < b.values.size(); ++k)
+      out += fmt::format("{}{}{}", k % 16 == 0 ? "\n    " : " ", b.values[k], k + 1 < b.values.size() ? "," : "");
+    out += "\n};\n";
+  }
+  if (!m.buffers.empty()) {
+    out += "inline constexpr Buffer buffers[] = {\n";
+    for (size_t i = 0; i < m.buffers.size(); ++i)
+      out += fmt::format("    {{{}, {}, buffer{}_values, {}}},\n", quoted(m.buffers[i].name), m.buffers[i].components,
+                         i, m.buffers[i].values.size());
+    out += "};\n\n";
+  }
 
   for (size_t i = 0; i < m.passes.size(); ++i) {
     const Pass& p = m.passes[i];
@@ -207,11 +235,13 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
   out += bindingArray(m, "lookup_bindings", m.shade.bindings);
   out += fmt::format(
       "\ninline constexpr Filter filter{{\n    {}, {}, {},\n    images, sizeof images / sizeof images[0],\n"
-      "    passes, sizeof passes / sizeof passes[0],\n    {{{}, {}, {}, {}, {}, {}}}}};\n\n}}  // namespace "
+      "    passes, sizeof passes / sizeof passes[0],\n    {{{}, {}, {}, {}, {}, {}}},\n    {}, {}}};\n\n}}  // "
+      "namespace "
       "shadowc_filters::{}\n",
       quoted(m.filter), quoted(m.compilerVersion), quoted(m.contentHash), quoted(m.shade.glsl),
       quoted(m.shade.function), quoted(m.shade.signature), m.shade.set,
-      m.shade.bindings.empty() ? "nullptr" : "lookup_bindings", m.shade.bindings.size(), identifier(m.filter));
+      m.shade.bindings.empty() ? "nullptr" : "lookup_bindings", m.shade.bindings.size(),
+      m.buffers.empty() ? "nullptr" : "buffers", m.buffers.size(), identifier(m.filter));
   return out;
 }
 

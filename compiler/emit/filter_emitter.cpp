@@ -134,6 +134,8 @@ FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, c
   if (shadePass->parameters)
     hashed.push_back(
         {"manifest.json:parameters", toJson(m)["passes"][size_t(shadePass - m.passes.begin())]["parameters"].dump()});
+  // So are the buffers' values (the quadtree tables): the shader reads them, it does not hold them.
+  if (!m.buffers.empty()) hashed.push_back({"manifest.json:buffers", toJson(m)["buffers"].dump()});
   m.contentHash = contentHash(hashed);
   result.files.push_back({kManifestFile, toJson(m).dump(2) + "\n"});
   std::sort(result.files.begin(), result.files.end(),

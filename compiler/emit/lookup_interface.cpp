@@ -15,13 +15,18 @@ namespace {
 // The image names the lookup declares (docs/manifest.md "Images (fixed names)") and the macro
 // of templates/frame_block.glsl / lookup/defaults.glsl that places each.
 constexpr std::pair<const char*, const char*> kMacros[] = {
-    {"frame", "SHADOWC_BINDING_FRAME"},          {"shadow_depth", "SHADOWC_BINDING_DEPTH"},
-    {"moments", "SHADOWC_BINDING_MOMENTS"},      {"sat", "SHADOWC_BINDING_SAT"},
-    {"minmax", "SHADOWC_BINDING_MINMAX"},        {"splits", "SHADOWC_BINDING_SPLITS"},
-    {"parameters", "SHADOWC_BINDING_PARAMETERS"}};  // generic shaders (plan/generic_block.h)
+    {"frame", "SHADOWC_BINDING_FRAME"},
+    {"shadow_depth", "SHADOWC_BINDING_DEPTH"},
+    {"moments", "SHADOWC_BINDING_MOMENTS"},
+    {"sat", "SHADOWC_BINDING_SAT"},
+    {"minmax", "SHADOWC_BINDING_MINMAX"},
+    {"splits", "SHADOWC_BINDING_SPLITS"},
+    {"parameters", "SHADOWC_BINDING_PARAMETERS"},     // generic shaders (plan/generic_block.h)
+    {"quadtree_table", "SHADOWC_BINDING_QUADTREE"}};  // `traversal: table` (plan/quadtree_tables.h)
 
 bool isLookupResource(const Binding& b) {
-  return b.access == Access::Uniform || b.access == Access::Sampled;  // the G-buffer and output are storage images
+  // The G-buffer and the output are storage images; the quadtree tables a read-only buffer.
+  return b.access == Access::Uniform || b.access == Access::Sampled || b.access == Access::StorageBufferRead;
 }
 
 const char* macroOf(const std::string& image) {

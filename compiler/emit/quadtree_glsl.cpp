@@ -1,4 +1,4 @@
-// GLSL rendering of the quadtree tables and the unrolled traversal; see quadtree_glsl.h.
+// GLSL rendering of the unrolled quadtree traversal; see quadtree_glsl.h.
 #include "emit/quadtree_glsl.h"
 
 #include <fmt/format.h>
@@ -6,26 +6,6 @@
 #include "plan/internal_error.h"
 
 namespace shadowc {
-
-std::string emitQuadtreeTablesGlsl(const QuadtreeTables& tables, std::string_view prefix) {
-  const size_t n = tables.nodes.size();
-  std::string nodes, child, next;
-  for (size_t i = 0; i < n; ++i) {
-    const QuadtreeNode& q = tables.nodes[i];
-    const char* sep = i + 1 < n ? ", " : "";
-    nodes += fmt::format("ivec3({}, {}, {}){}", q.ix, q.iy, 1 << q.level, sep);
-    child += fmt::format("{}{}", q.child, sep);
-    next += fmt::format("{}{}", q.next, sep);
-  }
-  std::string out;
-  out += fmt::format(
-      "// Quadtree of height {} in pre-order (vssm-yang2010 Algorithm 2, Fig. 5): node = (ix, iy, 2^level)\n",
-      tables.height);
-  out += fmt::format("const ivec3 {}Node[{}] = ivec3[]({});\n", prefix, n, nodes);
-  out += fmt::format("const int {}Child[{}] = int[]({});\n", prefix, n, child);
-  out += fmt::format("const int {}Next[{}] = int[]({});\n", prefix, n, next);
-  return out;
-}
 
 namespace {
 

@@ -1,17 +1,12 @@
-// GLSL for the quadtree traversal (vssm-yang2010 sec. 5.3, Algorithm 2): the planner decides
-// the tables (plan/quadtree_tables.h); these render them.
+// GLSL for the unrolled quadtree traversal (vssm-yang2010 sec. 5.3, Algorithm 2, `traversal:
+// unrolled`). The table walk reads the planner's tables from a buffer (plan/quadtree_tables.h),
+// the computed walk needs none: both are loops in templates/lookup/vssm.glsl.
 #pragma once
 
 #include <string>
 #include <string_view>
 
-#include "plan/quadtree_tables.h"
-
 namespace shadowc {
-
-// GLSL const arrays: `const ivec3 <prefix>Node[N]` (ix, iy, 2^level), `const int <prefix>Child[N]`,
-// `const int <prefix>Next[N]`; the node count macro is a planner Constant (SHADOWC_QT_NODES).
-std::string emitQuadtreeTablesGlsl(const QuadtreeTables& tables, std::string_view prefix);
 
 // Straight-line GLSL equivalent to the table walk (no loop, no table): a function
 //   void <functionName>() { if (<visitFn>(ivec3(0, 0, 1))) { ... } }

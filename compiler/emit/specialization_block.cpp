@@ -25,7 +25,6 @@ std::string renderTable(const Table& table) {
             fmt::format("{}vec2({}, {})", i ? ", " : "", glslFloat(t.points[i].first), glslFloat(t.points[i].second));
       return out + ");\n";
     }
-    std::string operator()(const QuadtreeTableSet& t) const { return emitQuadtreeTablesGlsl(t.tables, t.prefix); }
     std::string operator()(const UnrolledQuadtree& u) const {
       return emitUnrolledQuadtreeGlsl(u.height, u.function, u.visit, u.leaf);
     }

@@ -41,11 +41,12 @@ constexpr std::array<std::pair<ImageRole, const char*>, 5> kRoles{{{ImageRole::I
                                                                    {ImageRole::InputPosition, "input_position"},
                                                                    {ImageRole::InputNormal, "input_normal"},
                                                                    {ImageRole::OutputVisibility, "output_visibility"}}};
-constexpr std::array<std::pair<Access, const char*>, 5> kAccess{{{Access::Sampled, "sampled"},
+constexpr std::array<std::pair<Access, const char*>, 6> kAccess{{{Access::Sampled, "sampled"},
                                                                  {Access::StorageRead, "storage_read"},
                                                                  {Access::StorageWrite, "storage_write"},
                                                                  {Access::StorageReadWrite, "storage_read_write"},
-                                                                 {Access::Uniform, "uniform"}}};
+                                                                 {Access::Uniform, "uniform"},
+                                                                 {Access::StorageBufferRead, "storage_buffer_read"}}};
 constexpr std::array<std::pair<DispatchMode, const char*>, 5> kModes{{{DispatchMode::Texels, "texels"},
                                                                       {DispatchMode::Rows, "rows"},
                                                                       {DispatchMode::Columns, "columns"},
@@ -235,6 +236,26 @@ void formsFromJson(const nlohmann::json& e, Pass& p) {
   }
 }
 
+// A buffer's values are whole elements, and the runtime uploads them as they are: at least one
+// element, at most 1 MiB (a quadtree table of height 5 is 21,840 bytes).
+BufferDesc bufferFromJson(const nlohmann::json& j) {
+  BufferDesc b;
+  b.name = get<std::string>(j, "name");
+  b.components = get<uint32_t>(j, "components");
+  const nlohmann::json& values = field(j, "values");
+  if (!values.is_array()) throw ManifestError("manifest: buffer '" + b.name + "': field 'values' is not an array");
+  const auto wrong = [&](const char* why) {
+    return ManifestError("manifest: buffer '" + b.name + "': a value " + why);
+  };
+  for (const auto& v : values) b.values.push_back(integer<int32_t>(v, wrong));
+  if (b.components == 0 || b.components > 4 || b.values.empty() || b.values.size() % b.components ||
+      b.values.size() > (1u << 18))
+    throw ManifestError("manifest: buffer '" + b.name + "' must hold whole elements of 1 to 4 int32 (" +
+                        std::to_string(b.values.size()) + " values, " + std::to_string(b.components) +
+                        " per element), at most 1 MiB");
+  return b;
+}
+
 }  // namespace
 
 const std::vector<std::string>& subgroupOperationNames() {
@@ -338,6 +359,11 @@ nlohmann::ordered_json toJson(const Manifest& m) {
     e["linear_filter"] = im.linearFilter;
     images.push_back(std::move(e));
   }
+  if (!m.buffers.empty()) {
+    auto& buffers = j["buffers"] = nlohmann::ordered_json::array();
+    for (const auto& b : m.buffers)
+      buffers.push_back({{"name", b.name}, {"components", b.components}, {"values", b.values}});
+  }
   auto& passes = j["passes"] = nlohmann::ordered_json::array();
   for (const auto& p : m.passes) {
     nlohmann::ordered_json e;
@@ -401,6 +427,8 @@ Manifest manifestFromJson(const nlohmann::json& j) {
     im.linearFilter = get<bool>(e, "linear_filter");
     m.images.push_back(std::move(im));
   }
+  if (j.contains("buffers"))
+    for (const auto& e : field(j, "buffers")) m.buffers.push_back(bufferFromJson(e));
   for (const auto& e : field(j, "passes")) {
     Pass p;
     p.name = get<std::string>(e, "name");
@@ -434,6 +462,11 @@ Manifest manifestFromJson(const nlohmann::json& j) {
         throw ManifestError("manifest: pass '" + p.name + "' binds 'parameters' at " + std::to_string(b.binding) +
                             " but has no parameter block there");
       if (b.access == Access::Uniform) continue;
+      if (b.access == Access::StorageBufferRead) {
+        if (!std::any_of(m.buffers.begin(), m.buffers.end(), [&](const BufferDesc& d) { return d.name == b.image; }))
+          throw ManifestError("manifest: pass '" + p.name + "' binds unknown buffer '" + b.image + "'");
+        continue;
+      }
       const bool known =
           std::any_of(m.images.begin(), m.images.end(), [&](const ImageDesc& im) { return im.name == b.image; });
       if (!known) throw ManifestError("manifest: pass '" + p.name + "' binds unknown image '" + b.image + "'");

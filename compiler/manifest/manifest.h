@@ -56,11 +56,12 @@ struct ImageDesc {
   bool linearFilter = false;  // sampled with a linear sampler (else nearest)
 };
 
-enum class Access { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform };
+enum class Access { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform, StorageBufferRead };
 struct Binding {
   uint32_t binding = 0;
-  std::string
-      image;  // image name, "frame" for the ShadowcFrame uniform buffer, "parameters" for the pass's ParameterBlock
+  // image name, "frame" for the ShadowcFrame uniform buffer, "parameters" for the pass's
+  // ParameterBlock, or a buffer's name (StorageBufferRead: the manifest's `buffers`)
+  std::string image;
   Access access = Access::Sampled;
   int level = -1;  // storage views: the mip level bound; -1 = level 0 / whole image
 };
@@ -161,13 +162,24 @@ struct ShadeInterface {
   std::vector<Binding> bindings;
 };
 
+// A read-only storage buffer whose contents the manifest carries (the quadtree's Next/Child
+// tables, docs/manifest.md "Buffers"): the runtime uploads `values` once, as consecutive
+// little-endian int32, and binds it where a pass lists it with access storage_buffer_read.
+struct BufferDesc {
+  std::string name;
+  uint32_t components = 1;  // int32 per element (4: the shader reads an ivec4 array)
+  std::vector<int32_t> values;
+  friend bool operator==(const BufferDesc&, const BufferDesc&) = default;
+};
+
 struct Manifest {
   int formatVersion = kManifestFormatVersion;
   std::string compilerVersion;
   std::string filter;   // filter name
   nlohmann::json spec;  // the normalized FilterSpec (as --print-spec prints it)
   std::vector<ImageDesc> images;
-  std::vector<Pass> passes;  // in execution order
+  std::vector<BufferDesc> buffers;  // JSON "buffers", absent when there are none
+  std::vector<Pass> passes;         // in execution order
   ShadeInterface shade;
   std::string contentHash;  // hash of every emitted file but the manifest itself
 };

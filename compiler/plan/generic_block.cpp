@@ -128,6 +128,11 @@ void makeGeneric(PassGraph& graph) {
     }
   block.size = std::max<uint32_t>(16, roundUp(offset, 16));
 
+  // The walk's Next/Child tables for the tallest tree the language allows: they walk every smaller
+  // height (plan/quadtree_tables.h), so the heights can be uniforms as well.
+  for (BufferDesc& b : graph.manifest.buffers)
+    if (b.name == kQuadtreeTableBuffer) b = quadtreeTableBuffer(buildQuadtreeTables(kMaxQuadtreeHeight));
+
   values.constants = std::move(kept);
   values.tables = std::move(tables);
   values.parameters = block;

@@ -36,23 +36,23 @@ std::string printTable(const Table& table) {
         s += fmt::format("{}({}, {})", i ? ", " : " ", real(t.points[i].first), real(t.points[i].second));
       return s + "  # " + t.note;
     }
-    std::string operator()(const QuadtreeTableSet& t) const {
-      std::vector<int> child, next;
-      std::string node;
-      for (const QuadtreeNode& n : t.tables.nodes) {
-        child.push_back(n.child);
-        next.push_back(n.next);
-        node += fmt::format("{}({} {} {})", node.empty() ? "" : " ", n.ix, n.iy, 1 << n.level);
-      }
-      return fmt::format("table {} quadtree height {} nodes {}\n    node {}\n    child {}\n    next {}", t.prefix,
-                         t.tables.height, t.tables.nodes.size(), node, ints(child), ints(next));
-    }
     std::string operator()(const UnrolledQuadtree& u) const {
       return fmt::format("table {} unrolled_quadtree height {} visit {} leaf {}", u.function, u.height, u.visit,
                          u.leaf);
     }
   };
   return std::visit(Print{}, table);
+}
+
+// One group per element, on one line, as the tables are printed.
+std::string printBuffer(const BufferDesc& b) {
+  const size_t n = b.components ? b.values.size() / b.components : 0;
+  std::string out = fmt::format("buffer {} int32x{}[{}]", b.name, b.components, n);
+  for (size_t i = 0; i < n; ++i) {
+    const auto first = b.values.begin() + std::ptrdiff_t(i * b.components);
+    out += " (" + ints(std::vector<int>(first, first + b.components)) + ")";
+  }
+  return out + "\n";
 }
 
 }  // namespace
@@ -85,6 +85,7 @@ std::string printPassGraph(const PassGraph& graph) {
   for (const ImageDesc& d : m.images)
     out += fmt::format("image {} {} size {} levels {} layers {} role {}{}\n", d.name, toString(d.format), size(d.size),
                        d.mipLevels, d.layers, toString(d.role), d.linearFilter ? " linear" : "");
+  for (const BufferDesc& b : m.buffers) out += printBuffer(b);
   for (size_t i = 0; i < m.passes.size(); ++i) {
     const Pass& p = m.passes[i];
     out += fmt::format("pass {} {} kind {}\n", i, p.name, p.kind);

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "plan/image_formats.h"
+#include "plan/quadtree_tables.h"
 #include "plan/shade_plan.h"
 #include "plan/template_codes.h"
 
@@ -246,6 +247,11 @@ class Planner {
     if (has("sat")) s.bindings.push_back({6, "sat", Access::Sampled, -1});
     if (has("minmax")) s.bindings.push_back({7, "minmax", Access::Sampled, -1});
     if (has("splits")) s.bindings.push_back({8, "splits", Access::Sampled, -1});
+    // Algorithm 2's Next/Child tables, read by the walk from a small read-only buffer.
+    if (const int h = quadtreeTableHeight(spec_)) {
+      graph_.manifest.buffers.push_back(quadtreeTableBuffer(buildQuadtreeTables(h)));
+      s.bindings.push_back({kQuadtreeTableBinding, kQuadtreeTableBuffer, Access::StorageBufferRead, -1});
+    }
   }
 
   const FilterSpec& spec_;

@@ -64,6 +64,15 @@ QuadtreeTables buildQuadtreeTables(int height) {
   return t;
 }
 
+BufferDesc quadtreeTableBuffer(const QuadtreeTables& tables) {
+  BufferDesc b;
+  b.name = kQuadtreeTableBuffer;
+  b.components = 4;
+  for (const QuadtreeNode& n : tables.nodes)
+    b.values.insert(b.values.end(), {n.ix | (n.iy << 16), 1 << n.level, n.child, n.next});
+  return b;
+}
+
 std::vector<int> walkQuadtreeTables(const QuadtreeTables& tables, const std::function<bool(int)>& descend,
                                     int maxLevel) {
   std::vector<int> visited;

@@ -11,10 +11,17 @@
 // Because next() does not depend on what lies below a node, the tables of height H also walk
 // every smaller height h: treat nodes at level h as leaves (child = -1). vssm.glsl uses that to
 // share one table between the blocker and the visibility traversals.
+//
+// `traversal: table` reads these tables from a read-only storage buffer the manifest carries
+// (quadtreeTableBuffer); a dynamically indexed const array would be an if-ladder per read in
+// lavapipe, a buffer read is one load.
 #pragma once
 
+#include <cstdint>
 #include <functional>
 #include <vector>
+
+#include "manifest/manifest.h"
 
 namespace shadowc {
 
@@ -38,6 +45,13 @@ int quadtreeNodeCount(int height);
 
 // Builds the tables; height in [0, 6] (the checker enforces 1..5, E0314; InternalError otherwise).
 QuadtreeTables buildQuadtreeTables(int height);
+
+// The manifest buffer (and shade-pass binding name) holding the tables for the shader.
+inline constexpr const char* kQuadtreeTableBuffer = "quadtree_table";
+
+// The tables as the shader reads them: one ivec4 per node in pre-order,
+//   (ix | iy << 16, 2^level, child, next)   (ix, iy < 2^5 <= 2^16 for the checker's heights).
+BufferDesc quadtreeTableBuffer(const QuadtreeTables& tables);
 
 // The walk the GPU does (vssm.glsl): returns the visited node indices in order. `descend(i)` is
 // Algorithm 2's "not accepted" decision (neither fully lit nor a normal sub-kernel); a leaf that

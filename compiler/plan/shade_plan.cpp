@@ -32,6 +32,13 @@ void check(bool ok, const std::string& message) {
 
 }  // namespace
 
+int quadtreeTableHeight(const FilterSpec& s) {
+  if (techniqueCode(s).code != kTechniqueVssm || s.kernel.traversal != QuadtreeTraversal::Table) return 0;
+  const int k = s.kernel.subdivision == Subdivision::Quadtree ? s.kernel.quadtreeHeight : 0;
+  const int b = s.blocker.subdivision == Subdivision::Quadtree ? s.blocker.quadtreeHeight : 0;
+  return std::max(k, b);
+}
+
 Specialization planShadeSpecialization(const FilterSpec& s) {
   Specialization out;
   auto defInt = [&](const char* name, long long v) { out.add(name, v); };
@@ -214,11 +221,12 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
           out.tables.push_back(UnrolledQuadtree{s.blocker.quadtreeHeight, "shadowc_qtUnrolledBlocker",
                                                 "shadowc_qtVisit", "shadowc_qtLeaf"});
       } else {
-        // The walk computes Next/Child from the node (vssm.glsl shadowc_qtNextNode): no table in
-        // the shader, since lavapipe turns a dynamically indexed const table into an if-ladder
-        // per read (docs/performance.md, "Pipeline creation"). Bounded by the larger tree's size.
+        // One loop walk for both trees, bounded by the larger tree's size. `table` reads Next/Child
+        // from the buffer the planner adds (quadtreeTableHeight); `computed` derives them from the
+        // node (vssm.glsl shadowc_qtNextNode).
         const int h = std::max(kernelQt ? s.kernel.quadtreeHeight : 0, blockerQt ? s.blocker.quadtreeHeight : 0);
         defInt("SHADOWC_QT_NODES", quadtreeNodeCount(h));
+        if (s.kernel.traversal == QuadtreeTraversal::Table) defBool("SHADOWC_QT_TABLE", true);
       }
     }
   }

@@ -1,6 +1,8 @@
 // Typed specialization values: what the planner decides for one pass's template, before any
 // GLSL exists. A Constant sets one SHADOWC_* macro of the template; a Table is data the
 // template reads by name (a const array or, for the unrolled quadtree, a generated function).
+// Data the shader reads from a buffer (the quadtree's Next/Child tables) is the manifest's
+// (Manifest::buffers), not a Table.
 // The emitter renders both (emit/specialization_block.h); --print-plan prints them
 // (plan/plan_printer.h). Nothing here is GLSL text.
 #pragma once
@@ -12,7 +14,6 @@
 #include <vector>
 
 #include "manifest/manifest.h"  // ImageFormat
-#include "plan/quadtree_tables.h"
 #include "plan/template_codes.h"
 
 namespace shadowc {
@@ -53,19 +54,13 @@ struct PointTable {
   std::vector<std::pair<double, double>> points;
 };
 
-// Next/Child tables `<prefix>Node`, `<prefix>Child`, `<prefix>Next` (quadtree_tables.h).
-struct QuadtreeTableSet {
-  std::string prefix;
-  QuadtreeTables tables;
-};
-
 // Algorithm 2 unrolled for one height: `void <function>()` calling `visit` and `leaf`.
 struct UnrolledQuadtree {
   int height = 0;
   std::string function, visit, leaf;
 };
 
-using Table = std::variant<RealTable, PointTable, QuadtreeTableSet, UnrolledQuadtree>;
+using Table = std::variant<RealTable, PointTable, UnrolledQuadtree>;
 
 // Everything one template needs, in the order the emitter renders it.
 struct Specialization {

@@ -109,7 +109,9 @@ const char* name(Subdivision v) {
   return "?";
 }
 const char* name(KernelSize v) { return v == KernelSize::Fixed ? "fixed" : "penumbra"; }
-const char* name(QuadtreeTraversal v) { return v == QuadtreeTraversal::Table ? "table" : "unrolled"; }
+const char* name(QuadtreeTraversal v) {
+  return v == QuadtreeTraversal::Table ? "table" : v == QuadtreeTraversal::Computed ? "computed" : "unrolled";
+}
 const char* name(PcfPattern v) {
   switch (v) {
     case PcfPattern::Grid:

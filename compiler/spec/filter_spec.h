@@ -142,7 +142,8 @@ struct BlockerSpec {
 
 // ---- kernel ------------------------------------------------------------------------------
 enum class KernelSize { Fixed, Penumbra };
-enum class QuadtreeTraversal { Table, Unrolled };  // Algorithm 2 via Next/Child tables
+// Algorithm 2's walk: Next/Child read from tables in a buffer, computed from the node, or unrolled.
+enum class QuadtreeTraversal { Table, Computed, Unrolled };
 // The one range of quadtree heights (kernel and blocker): the checker rejects others (E0314),
 // so the lookup specialization and the table builder may assert it.
 inline constexpr int kMinQuadtreeHeight = 1;

@@ -144,7 +144,10 @@ std::string kernel(const KernelSpec& k) {
   if (k.subdivision == Subdivision::Quadtree) {
     form = "quadtree";
     args.push_back(fmt::format("height: {}", k.quadtreeHeight));
-    args.push_back(std::string("traversal: ") + (k.traversal == QuadtreeTraversal::Table ? "table" : "unrolled"));
+    const char* traversal = k.traversal == QuadtreeTraversal::Table      ? "table"
+                            : k.traversal == QuadtreeTraversal::Computed ? "computed"
+                                                                         : "unrolled";
+    args.push_back(std::string("traversal: ") + traversal);
   }
   args.push_back("max: " + num(k.maxTexels));
   args.push_back("lit_threshold: " + num(k.litThreshold));

@@ -405,8 +405,8 @@ class SettingsReader : ValueReader {
     if (const Value* x = get(b, "height"))
       if (auto n = quadtreeHeight(x, arg("height", v))) k.quadtreeHeight = *n;
     if (const Value* x = get(b, "traversal"))
-      if (auto c = choice(x, arg("traversal", v), {"table", "unrolled"}))
-        k.traversal = *c == 0 ? QuadtreeTraversal::Table : QuadtreeTraversal::Unrolled;
+      if (auto c = choice(x, arg("traversal", v), {"table", "computed", "unrolled"}))
+        k.traversal = static_cast<QuadtreeTraversal>(*c);  // the enum's order
     if (const Value* x = get(b, "max"))
       if (auto n = number(x, arg("max", v), Range{1, kMaxKernelTexels})) k.maxTexels = *n, out_.kernelMax = x;
     if (const Value* x = get(b, "lit_threshold"))

@@ -23,6 +23,21 @@ bool isStorage(Access a) {
 
 uint32_t ceilDiv(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 
+// A binding's descriptor, and the kind the shader must declare for it.
+VkDescriptorType descriptorType(Access a) {
+  return a == Access::Uniform             ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+         : a == Access::StorageBufferRead ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
+         : isStorage(a)                   ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                                          : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+}
+DescriptorKind descriptorKind(Access a) {
+  return a == Access::Uniform             ? DescriptorKind::UniformBuffer
+         : a == Access::StorageBufferRead ? DescriptorKind::StorageBuffer
+         : isStorage(a)                   ? DescriptorKind::StorageImage
+                                          : DescriptorKind::CombinedImageSampler;
+}
+bool isImage(Access a) { return a != Access::Uniform && a != Access::StorageBufferRead; }
+
 // The pass's module from the compiled files (little-endian words, as every .spv is stored).
 std::vector<uint32_t> spirvWords(const CompiledPasses& compiled, const Pass& pass) {
   const auto it = compiled.files.find(pass.spirv);
@@ -95,6 +110,7 @@ struct PassExecutor::Impl {
   std::vector<ImageResource> images;
   std::map<std::string, size_t> imageIndex;
   Buffer frame;
+  std::map<std::string, Buffer> buffers;  // the manifest's "buffers", written once from its values
   UniqueDescriptorPool pool;
   std::vector<PassResource> passes;
   UniqueQueryPool queries;
@@ -133,7 +149,7 @@ struct PassExecutor::Impl {
     }
     for (const auto& pass : manifest.passes)
       for (const auto& b : pass.bindings) {
-        if (b.access == Access::Uniform) continue;
+        if (!isImage(b.access)) continue;
         const auto it = imageIndex.find(b.image);
         if (it == imageIndex.end())
           throw ExecutorError(fmt::format("pass '{}': binding {} names image '{}', which the manifest does not declare",
@@ -211,12 +227,18 @@ struct PassExecutor::Impl {
     frame = createHostBuffer(ctx, sizeof(ShadowcFrame), VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
     std::memset(frame.mapped, 0, sizeof(ShadowcFrame));
 
+    for (const auto& desc : manifest.buffers) {
+      if (buffers.count(desc.name))
+        throw ExecutorError(fmt::format("manifest: buffer '{}' is declared twice", desc.name));
+      const size_t bytes = desc.values.size() * sizeof(int32_t);
+      if (bytes == 0) throw ExecutorError(fmt::format("manifest: buffer '{}' is empty", desc.name));
+      Buffer& b = buffers[desc.name] = createHostBuffer(ctx, bytes, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+      std::memcpy(b.mapped, desc.values.data(), bytes);  // little-endian int32, as the manifest says
+    }
+
     std::map<VkDescriptorType, uint32_t> counts;
     for (const auto& pass : manifest.passes)
-      for (const auto& b : pass.bindings)
-        ++counts[b.access == Access::Uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                 : isStorage(b.access)       ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
-                                             : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER];
+      for (const auto& b : pass.bindings) ++counts[descriptorType(b.access)];
     std::vector<VkDescriptorPoolSize> sizes;
     for (const auto& [type, n] : counts) sizes.push_back({type, n});
     if (sizes.empty()) sizes.push_back({VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 1});
@@ -272,13 +294,8 @@ struct PassExecutor::Impl {
 
     std::vector<VkDescriptorSetLayoutBinding> layoutBindings;
     for (const auto& b : pass.bindings) {
-      const VkDescriptorType type = b.access == Access::Uniform ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-                                    : isStorage(b.access)       ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
-                                                                : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
-      const DescriptorKind expected = b.access == Access::Uniform ? DescriptorKind::UniformBuffer
-                                      : isStorage(b.access)       ? DescriptorKind::StorageImage
-                                                                  : DescriptorKind::CombinedImageSampler;
-      if (declared.count(b.binding) && declared[b.binding].kind != expected)
+      const VkDescriptorType type = descriptorType(b.access);
+      if (declared.count(b.binding) && declared[b.binding].kind != descriptorKind(b.access))
         throw ExecutorError(fmt::format("pass '{}': binding {} ('{}') is {} in the manifest but a {} in the shader",
                                         pass.name, b.binding, b.image, toString(b.access),
                                         toString(declared[b.binding].kind)));
@@ -348,6 +365,8 @@ struct PassExecutor::Impl {
 
     std::vector<VkDescriptorImageInfo> imageInfos;
     imageInfos.reserve(pass.bindings.size());
+    std::vector<VkDescriptorBufferInfo> bufferInfos;
+    bufferInfos.reserve(pass.bindings.size());
     const VkDescriptorBufferInfo bufferInfo{frame.buffer, 0, sizeof(ShadowcFrame)};
     VkDescriptorBufferInfo parameterInfo{VK_NULL_HANDLE, 0, 0};
     if (pass.parameters) {
@@ -373,6 +392,18 @@ struct PassExecutor::Impl {
           throw ExecutorError(fmt::format("pass '{}': binding {} is 'parameters' but the pass has no parameter block",
                                           pass.name, b.binding));
         w.pBufferInfo = b.image == kParametersBinding ? &parameterInfo : &bufferInfo;
+        writes.push_back(w);
+        continue;
+      }
+      if (b.access == Access::StorageBufferRead) {
+        const auto it = buffers.find(b.image);
+        if (it == buffers.end())
+          throw ExecutorError(
+              fmt::format("pass '{}': binding {} names buffer '{}', which the manifest does not declare", pass.name,
+                          b.binding, b.image));
+        bufferInfos.push_back({it->second.buffer, 0, VK_WHOLE_SIZE});
+        w.descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
+        w.pBufferInfo = &bufferInfos.back();
         writes.push_back(w);
         continue;
       }

@@ -1,6 +1,7 @@
 #include "runtime/executor/spirv_reflect.h"
 
 #include <map>
+#include <set>
 #include <stdexcept>
 
 #include <glslang/SPIRV/spirv.hpp>
@@ -36,6 +37,7 @@ struct TypeInfo {
 const char* toString(DescriptorKind k) {
   switch (k) {
     case DescriptorKind::UniformBuffer: return "uniform buffer";
+    case DescriptorKind::StorageBuffer: return "storage buffer";
     case DescriptorKind::StorageImage: return "storage image";
     case DescriptorKind::CombinedImageSampler: return "combined image sampler";
     case DescriptorKind::Other: return "other descriptor";
@@ -48,6 +50,7 @@ ReflectedModule reflectSpirv(const std::vector<uint32_t>& words) {
   std::map<uint32_t, TypeInfo> types;
   std::map<uint32_t, uint32_t> bindingOf, setOf;
   std::map<uint32_t, std::string> names;
+  std::set<uint32_t> bufferBlocks;
   struct Var { uint32_t id, pointerType, storageClass; };
   std::vector<Var> vars;
   ReflectedModule out;
@@ -70,6 +73,7 @@ ReflectedModule reflectSpirv(const std::vector<uint32_t>& words) {
       case spv::OpDecorate:
         if (count >= 4 && w[2] == spv::DecorationBinding) bindingOf[w[1]] = w[3];
         if (count >= 4 && w[2] == spv::DecorationDescriptorSet) setOf[w[1]] = w[3];
+        if (count >= 3 && w[2] == spv::DecorationBufferBlock) bufferBlocks.insert(w[1]);  // SPIR-V < 1.3 SSBOs
         break;
       case spv::OpExecutionMode:
         if (count >= 6 && w[2] == spv::ExecutionModeLocalSize) out.localSize = std::array<uint32_t, 3>{w[3], w[4], w[5]};
@@ -97,7 +101,10 @@ ReflectedModule reflectSpirv(const std::vector<uint32_t>& words) {
     auto t = types.find(pointee);
     if (t != types.end() && (t->second.opcode == spv::OpTypeArray || t->second.opcode == spv::OpTypeRuntimeArray))
       t = types.find(t->second.operands.at(0));  // arrays of descriptors: look at the element
-    if (v.storageClass == spv::StorageClassUniform && t != types.end() && t->second.opcode == spv::OpTypeStruct) {
+    const bool block = t != types.end() && t->second.opcode == spv::OpTypeStruct;
+    if (block && (v.storageClass == spv::StorageClassStorageBuffer || bufferBlocks.count(t->first))) {
+      b.kind = DescriptorKind::StorageBuffer;
+    } else if (v.storageClass == spv::StorageClassUniform && block) {
       b.kind = DescriptorKind::UniformBuffer;
     } else if (t != types.end() && t->second.opcode == spv::OpTypeSampledImage) {
       b.kind = DescriptorKind::CombinedImageSampler;

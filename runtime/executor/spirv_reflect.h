@@ -14,7 +14,7 @@
 
 namespace shadowc::rt {
 
-enum class DescriptorKind { UniformBuffer, StorageImage, CombinedImageSampler, Other };
+enum class DescriptorKind { UniformBuffer, StorageBuffer, StorageImage, CombinedImageSampler, Other };
 
 struct ReflectedBinding {
   uint32_t set = 0, binding = 0;

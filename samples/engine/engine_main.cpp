@@ -76,6 +76,8 @@ VkDescriptorType descriptorType(sf::Access a) {
       return VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
     case sf::Access::Uniform:
       return VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER;
+    case sf::Access::StorageBufferRead:
+      return VK_DESCRIPTOR_TYPE_STORAGE_BUFFER;
     default:
       return VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
   }
@@ -226,7 +228,7 @@ Pipeline makePipeline(const rt::VulkanContext& ctx, VkDescriptorPool pool, const
       w.dstBinding = r.binding;
       w.descriptorCount = 1;
       w.descriptorType = r.type;
-      if (r.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER)
+      if (r.type == VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER || r.type == VK_DESCRIPTOR_TYPE_STORAGE_BUFFER)
         w.pBufferInfo = &bi;
       else
         w.pImageInfo = &ii;
@@ -314,12 +316,21 @@ int run(int argc, char** argv) {
   rt::Buffer engineFrame = rt::createHostBuffer(ctx, sizeof ef, VK_BUFFER_USAGE_UNIFORM_BUFFER_BIT);
   std::memcpy(engineFrame.mapped, &ef, sizeof ef);
 
+  // The filter's read-only buffers (the quadtree's Next/Child tables), written once from the header.
+  std::vector<rt::Buffer> buffers;
+  for (size_t i = 0; i < filter::filter.bufferCount; ++i) {
+    const sf::Buffer& b = filter::filter.buffers[i];
+    buffers.push_back(rt::createHostBuffer(ctx, b.valueCount * 4, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT));
+    std::memcpy(buffers.back().mapped, b.values, b.valueCount * 4);
+  }
+
   VkDescriptorPoolSize sizes[] = {{VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, 256},
                                   {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 256},
-                                  {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 64}};
+                                  {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, 64},
+                                  {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, 64}};
   VkDescriptorPoolCreateInfo dp{VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO};
   dp.maxSets = 64;
-  dp.poolSizeCount = 3;
+  dp.poolSizeCount = 4;
   dp.pPoolSizes = sizes;
   VkDescriptorPool rawPool = VK_NULL_HANDLE;
   rt::checkVk(vkCreateDescriptorPool(ctx.device(), &dp, nullptr, &rawPool), "vkCreateDescriptorPool");
@@ -334,6 +345,11 @@ int run(int argc, char** argv) {
     if (b.imageIndex < 0) {
       r.buffer = shadowcFrame.buffer;
       r.range = sizeof setup.frame;
+      return r;
+    }
+    if (b.access == sf::Access::StorageBufferRead) {
+      r.buffer = buffers.at(size_t(b.imageIndex)).buffer;
+      r.range = VK_WHOLE_SIZE;
       return r;
     }
     bool arrayed = false;

@@ -52,6 +52,9 @@
 #ifndef SHADOWC_BINDING_SPLITS
 #define SHADOWC_BINDING_SPLITS 8
 #endif
+#ifndef SHADOWC_BINDING_QUADTREE
+#define SHADOWC_BINDING_QUADTREE 10  // the quadtree's Next/Child tables (9: a generic shader's block)
+#endif
 
 // ---- technique --------------------------------------------------------------------------------
 #ifndef SHADOWC_TECHNIQUE
@@ -120,6 +123,9 @@
 #endif
 #ifndef SHADOWC_QUADTREE_UNROLLED
 #define SHADOWC_QUADTREE_UNROLLED 0
+#endif
+#ifndef SHADOWC_QT_TABLE
+#define SHADOWC_QT_TABLE 0  // 1: the walk reads Next/Child from shadowc_qtTable (resources.glsl)
 #endif
 #ifndef SHADOWC_LIT_THRESHOLD
 #define SHADOWC_LIT_THRESHOLD 1e-4

@@ -1,4 +1,4 @@
-// resources.glsl — the shadow-map resources of the lookup (bindings 4..8 of the shade pass,
+// resources.glsl — the shadow-map resources of the lookup (bindings 4..8 and 10 of the shade pass,
 // briefing table). Only what the filter uses is declared, so an engine that #includes the
 // emitted <filter>_lookup.glsl binds exactly the images listed in the manifest. The set is
 // SHADOWC_SET (default 0) and every binding can be moved with SHADOWC_BINDING_*; the emitter
@@ -29,6 +29,15 @@ layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_SAT) uniform sampler2DArray 
 #if SHADOWC_HAS_MINMAX
 // Min-max depth pyramid (r = min, g = max), full mip chain, texelFetch per level.
 layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_MINMAX) uniform sampler2D shadowc_minMaxPyramid;
+#endif
+
+#if SHADOWC_QT_TABLE
+// The quadtree's Next/Child tables (vssm-yang2010 Algorithm 2, Fig. 5), one ivec4 per node in
+// pre-order: (ix | iy << 16, 2^level, Child, Next), -1 for Null (plan/quadtree_tables.h). The
+// manifest carries the values (its "buffers"), the runtime uploads them once.
+layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_QUADTREE, std430) readonly buffer shadowc_QuadtreeTable {
+  ivec4 shadowc_qtTable[];
+};
 #endif
 
 #if SHADOWC_HAS_SPLITS_TEXTURE

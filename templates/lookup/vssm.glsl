@@ -7,7 +7,7 @@
 //  L16     penumbra kernel w_p from z_occ (PCSS formula, frame.glsl);
 //  sec 6.4 contact path: |z_occ - d| < epsilon -> n x n bilinear PCF over w_p;
 //  L17-20  visibility over w_p by uniform n x n subdivision (sec. 5.2) or the adaptive quadtree
-//          of Algorithm 2 (sec. 5.3), table walk with Next/Child or fully unrolled.
+//          of Algorithm 2 (sec. 5.3): Next/Child read from tables, computed, or fully unrolled.
 // Every sub-kernel is classified as in Algorithm 2 L9-L26:
 //   E(x) >= d and s^2 < Threshold  -> fully lit, LitArea += T                    (L9-L11)
 //   E(x) <  d                      -> normal: accumulate E(x) T, E(x^2) T, T    (L13-L17)
@@ -153,7 +153,7 @@ void shadowc_qtLeafBox(vec4 box) {
 
 #if SHADOWC_FALLBACK_PCF
 // The two mask words of the non-planar leaves whose PCF runs after a walk (shadowc_uniformWalk,
-// shadowc_qtWalk): bit b (0..63) of lo (b < 32) or hi. Set it when `on`.
+// the quadtree walks): bit b (0..63) of lo (b < 32) or hi. Set it when `on`.
 void shadowc_markSet(inout uint lo, inout uint hi, int b, bool on) {
   uint m = on ? 1u << (b & 31) : 0u;
   lo |= b < 32 ? m : 0u;
@@ -183,12 +183,11 @@ void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
 #include "lookup/uniform_walk.glsl"
 
 #if defined(SHADOWC_QT_NODES)
-// Next (Fig. 5) of a node of the full quadtree in pre-order, computed from the node itself, so
-// the walk reads no table: climb while the node is its parent's last child (Z order (0,0) (1,0)
+#if !SHADOWC_QT_TABLE
+// Next (Fig. 5) of a node of the full quadtree in pre-order, computed from the node itself
+// (`traversal: computed`): climb while the node is its parent's last child (Z order (0,0) (1,0)
 // (0,1) (1,1), as quadtree_tables.cpp builds them), then step to the next sibling; the root's
 // Next is Null (z = 0). tests/emit/quadtree_tables_test.cpp checks it against the Next table.
-// A dynamically indexed const table becomes an if-ladder per read in lavapipe, and the JIT time
-// of that grows much faster than the node count (docs/performance.md, "Pipeline creation").
 ivec3 shadowc_qtNextNode(ivec3 n) {
   // Levels to climb: the trailing ones of ix & iy (a last child has both low bits set), at
   // most the node's level (findLSB(z) for z = 2^level); no loop.
@@ -197,6 +196,7 @@ ivec3 shadowc_qtNextNode(ivec3 n) {
   int c = (n.x & 1) + 2 * (n.y & 1) + 1;
   return n.z <= 1 ? ivec3(0) : ivec3((n.x & ~1) | (c & 1), (n.y & ~1) | (c >> 1), n.z);
 }
+#endif
 
 #if SHADOWC_FALLBACK_PCF
 // Leaf (x, y) of a quadtree of height <= 3 as its Morton code (x in the even bits, y in the odd):
@@ -209,33 +209,36 @@ int shadowc_qtMorton(ivec2 p) {
 int shadowc_qtUnmorton(int b) { return (b & 1) | ((b >> 1) & 2) | ((b >> 2) & 4); }
 #endif
 
-// Stackless walk of Algorithm 2 ([Bun05], Fig. 5): Child on "descend", else Next. Nodes at
-// level `height` are leaves. Bounded by the node count, as the table walk was.
 // With the PCF fallback and height <= 3 the non-planar leaves are marked in two mask words (64
 // leaves) and get their PCF after the walk, in the walk's order (Morton order), so each PCF sum is
 // bit-identical: lavapipe runs a branch body or a loop's first iteration at every step of every
 // group, masked (shadowc_uniformWalk), so a PCF inside the walk cost every group one PCF per step;
 // after it, the most any lane of the group needs plus one. Higher trees resolve a leaf in place.
-void shadowc_qtWalk(int height) {
-  ivec3 n = ivec3(0, 0, 1);
+bool shadowc_qtDefers(int height) {
 #if SHADOWC_FALLBACK_PCF
-  bool defer = height <= 3;
-  uint marksLo = 0u;  // Morton codes 0..31 of the non-planar leaves
-  uint marksHi = 0u;  // 32..63
+  return height <= 3;
+#else
+  return false;
 #endif
-  for (int step = 0; step < SHADOWC_QT_NODES && n.z > 0; ++step) {
-    vec4 box = shadowc_qtBox(n);
-    bool nonPlanar = shadowc_qtClassifyBox(box) == 1;
-    bool leaf = n.z >= (1 << height);
+}
+
+// One node n = (ix, iy, 2^level) of Algorithm 2 (L6-L26): classify it; a non-planar leaf is
+// resolved in place or marked for after the walk. True when the walk takes Child, else Next.
+bool shadowc_qtStep(ivec3 n, int height, bool defer, inout uint marksLo, inout uint marksHi) {
+  vec4 box = shadowc_qtBox(n);
+  bool nonPlanar = shadowc_qtClassifyBox(box) == 1;
+  bool leaf = n.z >= (1 << height);
 #if SHADOWC_FALLBACK_PCF
-    if (defer) {
-      shadowc_markSet(marksLo, marksHi, shadowc_qtMorton(n.xy), nonPlanar && leaf);
-    } else
+  if (defer) {
+    shadowc_markSet(marksLo, marksHi, shadowc_qtMorton(n.xy), nonPlanar && leaf);
+  } else
 #endif
-    if (nonPlanar && leaf) shadowc_qtResolveLeaf(box);  // in place (a 0/1-step loop would cost the same)
-    n = nonPlanar && !leaf ? ivec3(2 * n.xy, 2 * n.z)  // Child: the first of the four
-                           : shadowc_qtNextNode(n);
-  }
+  if (nonPlanar && leaf) shadowc_qtResolveLeaf(box);  // in place (a 0/1-step loop would cost the same)
+  return nonPlanar && !leaf;
+}
+
+// The PCF of the leaves a walk marked (Morton codes 0..31 in lo, 32..63 in hi), in order.
+void shadowc_qtResolveMarked(int height, uint marksLo, uint marksHi) {
 #if SHADOWC_FALLBACK_PCF
   while ((marksLo | marksHi) != 0u) {
     int b = shadowc_markPop(marksLo, marksHi);
@@ -243,6 +246,39 @@ void shadowc_qtWalk(int height) {
   }
 #endif
 }
+
+#if !SHADOWC_QT_TABLE
+// Stackless walk of Algorithm 2 ([Bun05], Fig. 5) with Next/Child computed from the node
+// (`traversal: computed`): Child on "descend", else Next. Nodes at level `height` are leaves.
+// Bounded by the node count, as the table walk is.
+void shadowc_qtComputedWalk(int height) {
+  ivec3 n = ivec3(0, 0, 1);
+  bool defer = shadowc_qtDefers(height);
+  uint marksLo = 0u;
+  uint marksHi = 0u;
+  for (int step = 0; step < SHADOWC_QT_NODES && n.z > 0; ++step)
+    n = shadowc_qtStep(n, height, defer, marksLo, marksHi) ? ivec3(2 * n.xy, 2 * n.z)  // Child: the first of the four
+                                                           : shadowc_qtNextNode(n);
+  shadowc_qtResolveMarked(height, marksLo, marksHi);
+}
+
+#else
+// Algorithm 2 as the paper has it (`traversal: table`): TreeNode = TreeNode.Child or
+// TreeNode.Next, read from the tables the planner built (resources.glsl shadowc_qtTable), root
+// at 0, -1 for Null. The tables may be taller than `height` (one serves the blocker and the
+// kernel walk): a node at level `height` is a leaf, and its Next is the same (quadtree_tables.h).
+void shadowc_qtTableWalk(int height) {
+  int i = 0;
+  bool defer = shadowc_qtDefers(height);
+  uint marksLo = 0u;
+  uint marksHi = 0u;
+  for (int step = 0; step < SHADOWC_QT_NODES && i >= 0; ++step) {
+    ivec4 t = shadowc_qtTable[i];
+    i = shadowc_qtStep(ivec3(t.x & 0xffff, t.x >> 16, t.y), height, defer, marksLo, marksHi) ? t.z : t.w;
+  }
+  shadowc_qtResolveMarked(height, marksLo, marksHi);
+}
+#endif
 #endif
 
 // Average blocker depth over the search rectangle (L11-L15), or -1 when nothing occludes.
@@ -251,8 +287,10 @@ float shadowc_vssmBlocker(vec4 searchBox, float d) {
 #if SHADOWC_BLOCKER_SUBDIVISION == SHADOWC_SUBDIV_QUADTREE
 #if SHADOWC_QUADTREE_UNROLLED
   shadowc_qtUnrolledBlocker();
+#elif SHADOWC_QT_TABLE
+  shadowc_qtTableWalk(SHADOWC_BLOCKER_HEIGHT);
 #else
-  shadowc_qtWalk(SHADOWC_BLOCKER_HEIGHT);
+  shadowc_qtComputedWalk(SHADOWC_BLOCKER_HEIGHT);
 #endif
 #elif SHADOWC_BLOCKER_SUBDIVISION == SHADOWC_SUBDIV_UNIFORM
   shadowc_uniformWalk(SHADOWC_BLOCKER_M, SHADOWC_BLOCKER_SUBDIVIDE_NONPLANAR != 0);
@@ -283,8 +321,10 @@ float shadowc_vssmVisibility(vec4 box, float d) {
 #if SHADOWC_KERNEL_SUBDIVISION == SHADOWC_SUBDIV_QUADTREE
 #if SHADOWC_QUADTREE_UNROLLED
   shadowc_qtUnrolledKernel();
+#elif SHADOWC_QT_TABLE
+  shadowc_qtTableWalk(SHADOWC_KERNEL_HEIGHT);
 #else
-  shadowc_qtWalk(SHADOWC_KERNEL_HEIGHT);
+  shadowc_qtComputedWalk(SHADOWC_KERNEL_HEIGHT);
 #endif
 #elif SHADOWC_KERNEL_SUBDIVISION == SHADOWC_SUBDIV_UNIFORM
   shadowc_uniformWalk(SHADOWC_KERNEL_N, SHADOWC_KERNEL_SUBDIVIDE_NONPLANAR != 0);

@@ -59,19 +59,31 @@ TEST(EmittedCode, UnrolledQuadtreeTraversalHasNoLoop) {
   EXPECT_EQ(shade.find("shadowc_qtNext"), std::string::npos) << "no Next table when unrolled";
 }
 
-// Sibling: the table-driven traversal does carry the Next/Child tables (Algorithm 2).
-// The table walk computes Next/Child from the node in a loop and carries no const tables:
-// lavapipe lowers a dynamically indexed const table to an if-ladder per read, and the JIT of
-// that took > 20 s at height 4 (docs/performance.md, "Pipeline creation").
-TEST(EmittedCode, TableQuadtreeTraversalIsALoopWithoutTables) {
-  const driver::Result r = driver::compileSpec(vssmTraversal(QuadtreeTraversal::Table));
+// The computed walk derives Next/Child from the node in a loop and carries no table: neither a
+// const array (lavapipe lowers a dynamically indexed one to an if-ladder per read) nor the buffer.
+TEST(EmittedCode, ComputedQuadtreeTraversalIsALoopWithoutTables) {
+  const driver::Result r = driver::compileSpec(vssmTraversal(QuadtreeTraversal::Computed));
   ASSERT_TRUE(r.ok) << r.log;
   const std::string shade = file(r, "shade.glsl");
   EXPECT_NE(shade.find(": shadowc_qtNextNode(n);"), std::string::npos);  // Next, computed from the node
-  EXPECT_EQ(shade.find("shadowc_qtNext["), std::string::npos);
-  EXPECT_EQ(shade.find("shadowc_qtChild["), std::string::npos);
-  EXPECT_EQ(shade.find("shadowc_qtNode["), std::string::npos);
+  EXPECT_EQ(shade.find("shadowc_qtTable"), std::string::npos);
+  EXPECT_EQ(shade.find("const ivec"), std::string::npos);
   EXPECT_EQ(shade.find("shadowc_qtUnrolledKernel"), std::string::npos);
+  EXPECT_TRUE(r.artifact->manifest.buffers.empty());
+}
+
+// Sibling: the table walk reads Child and Next from the read-only buffer (Algorithm 2), and
+// computes neither.
+TEST(EmittedCode, TableQuadtreeTraversalReadsChildAndNextFromTheBuffer) {
+  const driver::Result r = driver::compileSpec(vssmTraversal(QuadtreeTraversal::Table));
+  ASSERT_TRUE(r.ok) << r.log;
+  const std::string shade = file(r, "shade.glsl");
+  EXPECT_NE(shade.find("readonly buffer shadowc_QuadtreeTable"), std::string::npos);
+  EXPECT_NE(shade.find("ivec4 t = shadowc_qtTable[i];"), std::string::npos);
+  EXPECT_NE(shade.find("? t . z : t . w;"), std::string::npos);  // Child : Next
+  EXPECT_EQ(shade.find("shadowc_qtNextNode"), std::string::npos);
+  EXPECT_EQ(shade.find("const ivec"), std::string::npos);
+  ASSERT_EQ(r.artifact->manifest.buffers.size(), 1u);
 }
 
 TEST(EmittedCode, EmittedGlslIsPreprocessed) {

@@ -141,6 +141,8 @@ std::vector<Variant> variants() {
   {
     FilterSpec s = vssmSpec();
     v.push_back({"vssm_mixed_qt_table", s});
+    s.kernel.traversal = QuadtreeTraversal::Computed;
+    v.push_back({"vssm_mixed_qt_computed", s});
     s.kernel.traversal = QuadtreeTraversal::Unrolled;
     v.push_back({"vssm_mixed_qt_unrolled", s});
     s.contact.enabled = true;
@@ -298,11 +300,16 @@ TEST(LookupCompileChecks, UnrolledQuadtreeHasNoLoopInItsTraversal) {
   EXPECT_EQ(leaves, 64u);
 }
 
-TEST(LookupCompileChecks, TableQuadtreeWalkIsBoundedByTheNodeCount) {
-  const std::string pre = preprocessed(find("vssm_mixed_qt_table"));
-  EXPECT_NE(pre.find("step < 85"), std::string::npos);  // height 3: (4^4 - 1) / 3 nodes
-  EXPECT_EQ(pre.find("const int shadowc_qtNext["), std::string::npos);
-  EXPECT_EQ(pre.find("shadowc_qtUnrolled"), std::string::npos);
+TEST(LookupCompileChecks, LoopQuadtreeWalksAreBoundedByTheNodeCount) {
+  for (const char* name : {"vssm_mixed_qt_table", "vssm_mixed_qt_computed"}) {
+    const std::string pre = preprocessed(find(name));
+    EXPECT_NE(pre.find("step < 85"), std::string::npos) << name;   // height 3: (4^4 - 1) / 3 nodes
+    EXPECT_EQ(pre.find("const ivec"), std::string::npos) << name;  // no const table
+    EXPECT_EQ(pre.find("shadowc_qtUnrolled"), std::string::npos) << name;
+  }
+  // The table walk reads the buffer; the computed one has none.
+  EXPECT_NE(preprocessed(find("vssm_mixed_qt_table")).find("shadowc_qtTable[i]"), std::string::npos);
+  EXPECT_EQ(preprocessed(find("vssm_mixed_qt_computed")).find("shadowc_qtTable"), std::string::npos);
 }
 
 TEST(LookupCompileChecks, FoldedLightWidthReplacesTheFrameValue) {

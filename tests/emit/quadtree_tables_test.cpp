@@ -222,19 +222,33 @@ TEST(QuadtreeTables, UnrolledCodeIsStraightLineAndEquivalentToTheWalk) {
   EXPECT_THROW(emitUnrolledQuadtreeGlsl(7, "walk", "visit", "leaf"), InternalError);
 }
 
-TEST(QuadtreeTables, GlslTablesListEveryNode) {
-  const QuadtreeTables t = buildQuadtreeTables(2);
-  const std::string glsl = emitQuadtreeTablesGlsl(t, "qt");
-  EXPECT_NE(glsl.find("const int qtNext[21] = int[]("), std::string::npos);
-  EXPECT_NE(glsl.find("const int qtChild[21] = int[](1, 2, -1, -1, -1, -1, 7,"), std::string::npos);
-  EXPECT_NE(glsl.find("const ivec3 qtNode[21] = ivec3[](ivec3(0, 0, 1), ivec3(0, 0, 2), ivec3(0, 0, 4),"),
-            std::string::npos);
-  // Deterministic bytes.
-  EXPECT_EQ(glsl, emitQuadtreeTablesGlsl(buildQuadtreeTables(2), "qt"));
+// The manifest buffer `traversal: table` reads: one (ix | iy << 16, 2^level, child, next) per
+// node, in the tables' order, so that the shader's walk is walkQuadtreeTables.
+TEST(QuadtreeTables, BufferHoldsEveryNodeAsTheShaderReadsIt) {
+  for (int h = 1; h <= 5; ++h) {
+    const QuadtreeTables t = buildQuadtreeTables(h);
+    const BufferDesc b = quadtreeTableBuffer(t);
+    EXPECT_EQ(b.name, kQuadtreeTableBuffer);
+    ASSERT_EQ(b.components, 4u);
+    ASSERT_EQ(b.values.size(), 4 * t.nodes.size()) << "height " << h;
+    for (size_t i = 0; i < t.nodes.size(); ++i) {
+      const QuadtreeNode& q = t.nodes[i];
+      const int32_t* v = &b.values[4 * i];
+      // The shader's unpacking (vssm.glsl shadowc_qtTableWalk): ix = x & 0xffff, iy = x >> 16.
+      EXPECT_EQ(std::make_tuple(v[0] & 0xffff, v[0] >> 16, v[1], v[2], v[3]),
+                std::make_tuple(q.ix, q.iy, 1 << q.level, q.child, q.next))
+          << "height " << h << " node " << i;
+    }
+  }
+  // Height 2 in full, as docs/manifest.md "Buffers" prints the start of it.
+  const BufferDesc b = quadtreeTableBuffer(buildQuadtreeTables(2));
+  EXPECT_EQ(std::vector<int32_t>(b.values.begin(), b.values.begin() + 16),
+            (std::vector<int32_t>{0, 1, 1, -1, 0, 2, 2, 6, 0, 4, -1, 3, 1, 4, -1, 4}));
 }
 
-// templates/lookup/vssm.glsl computes Next from the node (shadowc_qtNextNode) instead of reading
-// the table; this is that function line by line, checked against the Next table of every node.
+// `traversal: computed` (templates/lookup/vssm.glsl) derives Next from the node (shadowc_qtNextNode)
+// instead of reading the table; this is that function line by line, checked against the Next
+// table of every node.
 TEST(QuadtreeTables, ComputedNextEqualsTheNextTable) {
   struct N {
     int x, y, z;  // ix, iy, 2^level; z = 0 is Null

@@ -1,6 +1,6 @@
 // The unrolled quadtree's shade shader keeps its node callbacks as calls through the -O recipe
 // (inlined 85 times at height 3 the recipe took 1.2-2.6 s; backend/dont_inline.h).
-// Sibling: the table walk, which calls them from one loop, is inlined completely.
+// Sibling: the loop walks (table and computed), which call them from one loop, are inlined completely.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -32,10 +32,12 @@ TEST(UnrolledQuadtreeCalls, NodeCallbacksStayCallsAtO) {
   EXPECT_NE(dis.find("OpFunctionCall"), std::string::npos);
 }
 
-TEST(UnrolledQuadtreeCalls, TheTableWalkIsInlinedCompletely) {
-  const std::string dis = shadeDisassembly(QuadtreeTraversal::Table);
-  EXPECT_EQ(dis.find("DontInline"), std::string::npos);
-  EXPECT_EQ(dis.find("OpFunctionCall"), std::string::npos) << dis.substr(0, 400);
+TEST(UnrolledQuadtreeCalls, TheLoopWalksAreInlinedCompletely) {
+  for (QuadtreeTraversal t : {QuadtreeTraversal::Table, QuadtreeTraversal::Computed}) {
+    const std::string dis = shadeDisassembly(t);
+    EXPECT_EQ(dis.find("DontInline"), std::string::npos);
+    EXPECT_EQ(dis.find("OpFunctionCall"), std::string::npos) << dis.substr(0, 400);
+  }
 }
 
 }  // namespace

@@ -80,6 +80,18 @@ std::string expectations(const Manifest& m, const driver::Artifact& a) {
       "eq(f::filter.lookup.signature, {}) && f::filter.lookup.set == {} && f::filter.lookup.bindingCount == {});\n",
       q(m.shade.glsl), q(m.shade.function), q(m.shade.signature), m.shade.set, m.shade.bindings.size());
   bindings("f::filter.lookup.bindings", m.shade.bindings);
+  t += fmt::format("static_assert(f::filter.bufferCount == {});\n", m.buffers.size());
+  for (size_t i = 0; i < m.buffers.size(); ++i) {
+    const BufferDesc& b = m.buffers[i];
+    long long sum = 0;  // position-weighted, so a swapped pair of values is caught too
+    for (size_t k = 0; k < b.values.size(); ++k) sum += (long long)(k + 1) * b.values[k];
+    t += fmt::format(
+        "constexpr long long weighted{0}() {{ long long s = 0; for (std::size_t k = 0; k < f::buffers[{0}].valueCount; "
+        "++k) s += (long long)(k + 1) * f::buffers[{0}].values[k]; return s; }}\n"
+        "static_assert(eq(f::buffers[{0}].name, {1}) && f::buffers[{0}].components == {2} && "
+        "f::buffers[{0}].valueCount == {3} && weighted{0}() == {4}ll);\n",
+        i, q(b.name), b.components, b.values.size(), sum);
+  }
   return t;
 }
 
@@ -115,10 +127,11 @@ TEST_P(CppHeader, CompilesAndEveryValueEqualsTheManifest) {
 }
 
 // Samples that between them use every manifest feature the header carries: several shared
-// shaders (mip, minmax), layers, int32 SAT, Lloyd splits, push constants where any exist.
+// shaders (mip, minmax), layers, int32 SAT, Lloyd splits, push constants where any exist, the
+// quadtree's table buffer.
 INSTANTIATE_TEST_SUITE_P(Samples, CppHeader,
                          ::testing::Values("vssm_pcf_fallback", "vsm_blur_mips_bleeding", "layered_vsm_lloyd",
-                                           "vssm_minmax_early_out", "pcss_poisson"),
+                                           "vssm_minmax_early_out", "pcss_poisson", "vssm_quadtree_table"),
                          [](const auto& info) { return info.param; });
 
 TEST(CppHeader, TwoFilterHeadersShareOneTranslationUnit) {

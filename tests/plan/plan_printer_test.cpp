@@ -64,6 +64,9 @@ const std::vector<std::string> kVssmChecks = {
     "CHECK-NEXT: image sat rg32ui size map levels 1 layers 1 role internal",
     // A SAT kernel's max defaults to the whole map: the pyramid stops at level 8 (planner.h).
     "CHECK-NEXT: image minmax rg32f size map levels 9 layers 1 role internal",
+    // Algorithm 2's Next/Child tables for height 3 (traversal: table), (ix | iy << 16, 2^level,
+    // Child, Next) per node in pre-order: the root, its first child, whose Next is node 22.
+    "CHECK-NEXT: buffer quadtree_table int32x4[85] (0 1 1 -1) (0 2 2 22) (0 4 3 7) (0 8 -1 4) (1 8 -1 5)",
     "CHECK-NEXT: pass 0 sat_rows kind sat",
     "CHECK-NEXT:   template passes/sat_rows.comp stem sat_rows",
     "CHECK-NEXT:   local 64x1x1 dispatch rows map",
@@ -87,6 +90,7 @@ const std::vector<std::string> kVssmChecks = {
     "CHECK-NOT: pass 7",
     "CHECK: pass 6 shade kind shade",
     "CHECK: binding 6 sat sampled",
+    "CHECK: binding 10 quadtree_table storage_buffer_read",
     "CHECK: value SHADOWC_TECHNIQUE enum SHADOWC_TECHNIQUE_VSSM (3)",
     "CHECK: value SHADOWC_LIGHT_WIDTH real 0.04",
     // Boxes up to the whole map: the int32 SAT sums them in pieces of 255 (sat.glsl).
@@ -99,7 +103,8 @@ const std::vector<std::string> kVssmChecks = {
     "CHECK: value SHADOWC_FALLBACK_PCF bool 1",
     "CHECK: value SHADOWC_CONTACT_EPSILON real 0.01",
     "CHECK: value SHADOWC_QT_NODES int 85",  // (4^4 - 1) / 3
-    // The table walk computes Next/Child from the node (vssm.glsl): no table in the plan.
+    "CHECK-NEXT: value SHADOWC_QT_TABLE bool 1",
+    // The tables are the buffer's, not a GLSL table.
     "CHECK-NOT: table shadowc_qt",
 };
 

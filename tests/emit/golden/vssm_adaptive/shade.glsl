@@ -55,6 +55,10 @@ layout(set = 0, binding = 4)uniform sampler2D shadowc_shadowDepth;
 layout(set = 0, binding = 6)uniform usampler2DArray shadowc_summedArea;
 #line 31
 layout(set = 0, binding = 7)uniform sampler2D shadowc_minMaxPyramid;
+#line 38
+layout(set = 0, binding = 10, std430)readonly buffer shadowc_QuadtreeTable {
+  ivec4 shadowc_qtTable[];
+};
 #line 16 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/kernel.glsl"
 #line 8
@@ -546,41 +550,33 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
 #line 310
 }
 #line 184 "lookup/vssm.glsl"
-#line 192
-ivec3 shadowc_qtNextNode(ivec3 n){
-#line 195
-  int up = min(findLSB(~(n . x & n . y)), findLSB(n . z));
-  n = ivec3(n . xy >> up, n . z >> up);
-  int c =(n . x & 1)+ 2 *(n . y & 1)+ 1;
-  return n . z <= 1 ? ivec3(0): ivec3((n . x & ~ 1)|(c & 1),(n . y & ~ 1)|(c >> 1), n . z);
-}
 #line 205
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 219
-void shadowc_qtWalk(int height){
-  ivec3 n = ivec3(0, 0, 1);
+#line 217
+bool shadowc_qtDefers(int height){
 
-  bool defer = height <= 3;
-  uint marksLo = 0u;
-  uint marksHi = 0u;
+  return height <= 3;
+#line 223
+}
+#line 227
+bool shadowc_qtStep(ivec3 n, int height, bool defer, inout uint marksLo, inout uint marksHi){
+  vec4 box = shadowc_qtBox(n);
+  bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
+  bool leaf = n . z >=(1 << height);
 
-  for(int step = 0;step < 85 && n . z > 0;++ step){
-    vec4 box = shadowc_qtBox(n);
-    bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
-    bool leaf = n . z >=(1 << height);
+  if(defer){
+    shadowc_markSet(marksLo, marksHi, shadowc_qtMorton(n . xy), nonPlanar && leaf);
+  } else
 
-    if(defer){
-      shadowc_markSet(marksLo, marksHi, shadowc_qtMorton(n . xy), nonPlanar && leaf);
-    } else
-
-    if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
-    n = nonPlanar && ! leaf ? ivec3(2 * n . xy, 2 * n . z)
-                           : shadowc_qtNextNode(n);
-  }
+  if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
+  return nonPlanar && ! leaf;
+}
+#line 241
+void shadowc_qtResolveMarked(int height, uint marksLo, uint marksHi){
 
   while((marksLo | marksHi)!= 0u){
     int b = shadowc_markPop(marksLo, marksHi);
@@ -588,12 +584,24 @@ void shadowc_qtWalk(int height){
   }
 
 }
-#line 249
+#line 270
+void shadowc_qtTableWalk(int height){
+  int i = 0;
+  bool defer = shadowc_qtDefers(height);
+  uint marksLo = 0u;
+  uint marksHi = 0u;
+  for(int step = 0;step < 85 && i >= 0;++ step){
+    ivec4 t = shadowc_qtTable[i];
+    i = shadowc_qtStep(ivec3(t . x & 0xffff, t . x >> 16, t . y), height, defer, marksLo, marksHi)? t . z : t . w;
+  }
+  shadowc_qtResolveMarked(height, marksLo, marksHi);
+}
+#line 285
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 258
+#line 296
   shadowc_uniformWalk(5, 0 != 0);
-#line 263
+#line 301
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -610,12 +618,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 281
+#line 319
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 287
-  shadowc_qtWalk(3);
-#line 294
+#line 325
+  shadowc_qtTableWalk(3);
+#line 334
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -629,20 +637,20 @@ float shadowc_vssmVisibility(vec4 box, float d){
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 314
+#line 354
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 322
+#line 362
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 331
+#line 371
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
