@@ -161,7 +161,8 @@ class Planner {
     d.add("SHADOWC_SAT_FROM_DEPTH", fused);
     Pass& rows =
         addPass("sat_rows", "sat", {64, 1, 1}, {kMap, DispatchMode::Rows}, {"passes/sat_rows.comp", "sat_rows", d});
-    addParallelForm(rows, DispatchMode::RowGroups, {"passes/sat_rows_parallel.comp", "sat_rows_parallel", d});
+    if (parallelSat())
+      addParallelForm(rows, DispatchMode::RowGroups, {"passes/sat_rows_parallel.comp", "sat_rows_parallel", d});
     if (fused) {
       rows.bindings = {{0, "shadow_depth", Access::Sampled, -1}, {1, "sat", Access::StorageWrite, 0}};
       if (lloyd) rows.bindings.push_back({2, "splits", Access::Sampled, -1});
@@ -174,15 +175,18 @@ class Planner {
     c.add("SHADOWC_SAT_FORMAT", satFormat(spec_));
     Pass& cols = addPass("sat_columns", "sat", {64, 1, 1}, {kMap, DispatchMode::Columns},
                          {"passes/sat_columns.comp", "sat_columns", c});
-    addParallelForm(cols, DispatchMode::ColumnGroups,
-                    {"passes/sat_columns_parallel.comp", "sat_columns_parallel", std::move(c)});
+    if (parallelSat())
+      addParallelForm(cols, DispatchMode::ColumnGroups,
+                      {"passes/sat_columns_parallel.comp", "sat_columns_parallel", std::move(c)});
     cols.bindings = {{0, "sat", Access::StorageReadWrite, 0}};
   }
 
-  // The SAT scans come in two forms with bit-identical tables (sat_common.glsl "The blocked
-  // order"): the serial scan, one invocation per row or column, for CPU devices (the pass as
+  // An int32 SAT's scans come in two forms with bit-identical tables (sat_common.glsl "Two
+  // forms"): the serial scan, one invocation per row or column, for CPU devices (the pass as
   // added), and a workgroup of SHADOWC_SAT_TILE_CHUNKS invocations per row or column for GPUs,
-  // where one invocation per row is bound by latency (Nehab et al. 2011).
+  // where one invocation per row is bound by latency (Nehab et al. 2011). fp32 sums depend on the
+  // order, and the blocked one is less precise for small boxes: fp32 tables keep the serial form.
+  bool parallelSat() const { return spec_.storage.sat == SatKind::Int32; }
   void addParallelForm(Pass& pass, DispatchMode mode, PassSource source) {
     pass.form = "serial";
     pass.formNeeds.device = FormDevice::Cpu;

@@ -19,7 +19,7 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 // root is accepted first (shadowc_rootNeedsWalk). `nonPlanarOnly`:
 // Algorithm 1 L11-L15 / L17-L20, the root box alone when it is lit or normal (one box read),
 // the den x den walk only when it is non-planar (classify accumulates nothing then).
-// What lavapipe charges (docs/performance.md "One loop for the whole uniform walk"): an
+// What lavapipe charges (docs/performance.md "One loop, one line of corners a step"): an
 // 8-lane SIMD group runs every branch body and every loop's first iteration, masked, whatever its
 // lanes decide (gallivm pushes an execution mask for an `if` and tests for live lanes only at a
 // loop's end); only further iterations are skipped once no lane is left. So the whole walk is ONE
@@ -34,8 +34,8 @@ bool shadowc_rootNeedsWalk(vec4 m, float area, bool nonPlanarOnly) {
 // separate boxes). A step with two cells (two rows, 15 steps for den = 5) cost every group that
 // does not walk a second classification: the mixed scheme was 4 % behind H = 3 alone on planar
 // scenes with the min-max early out, where no group walks (callgrind, docs/performance.md
-// "One column per step"). Rows, not columns: a step's two corners lie on one texel row, and so
-// do the root's first two. Measured, not derived (cache simulation of the CPU lavapipe runs on,
+// "One loop, one line of corners a step"). Rows, not columns: a step's two corners lie on one
+// texel row, and so do the root's first two. Measured, not derived (cache simulation of the CPU lavapipe runs on,
 // 2048^2 map with the early out on two_planes, where no group walks): the column walk's shade
 // missed the first-level cache 174 K times a 256^2 frame and this one 154 K, and the mixed scheme
 // went from 3-9 % behind H = 3 alone to 1-6 % ahead (docs/performance.md "Rows, not columns").

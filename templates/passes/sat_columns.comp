@@ -2,9 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // @shadowc:specialize
 // sat_columns.comp — second half of the summed-area table: one invocation per column
-// (dispatch mode "columns": gl_GlobalInvocationID.x = x) adds the row sums down y, in place, in
-// the blocked order. Each invocation owns its column, so no barrier is needed. The serial (CPU)
-// form; sat_columns_parallel.comp is the GPU form. See sat_common.glsl.
+// (dispatch mode "columns": gl_GlobalInvocationID.x = x) adds the row sums down y, in place.
+// Each invocation owns its column, so no barrier is needed. The serial (CPU) form; an int32 table
+// also has the GPU form sat_columns_parallel.comp. See sat_common.glsl.
 #ifndef SHADOWC_LAYERS
 #define SHADOWC_LAYERS 1
 #endif
@@ -17,29 +17,20 @@ void main() {
   const ivec2 size = imageSize(sat).xy;
   const int x = int(gl_GlobalInvocationID.x);
   if (x >= size.x) return;
-  // The blocked order (sat_common.glsl): a chunk is one batch.
   for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
-    SHADOWC_SAT_VALUE tileCarry = SHADOWC_SAT_VALUE(0), groupCarry = tileCarry, chunkCarry = tileCarry;
-    int y = 0, chunk = 0;
-    for (; y + SHADOWC_SAT_BATCH <= size.y; y += SHADOWC_SAT_BATCH, ++chunk) {
+    SHADOWC_SAT_VALUE sum = SHADOWC_SAT_VALUE(0);
+    int y = 0;
+    for (; y + SHADOWC_SAT_BATCH <= size.y; y += SHADOWC_SAT_BATCH) {
       SHADOWC_SAT_VALUE v[SHADOWC_SAT_BATCH];  // read before any is written (sat_common.glsl)
       for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) v[i] = imageLoad(sat, ivec3(x, y + i, layer));
-      precise SHADOWC_SAT_VALUE base = (tileCarry + groupCarry) + chunkCarry;
-      precise SHADOWC_SAT_VALUE local = SHADOWC_SAT_VALUE(0);
       for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) {
-        local += v[i];
-        precise SHADOWC_SAT_VALUE s = base + local;
-        imageStore(sat, ivec3(x, y + i, layer), s);
+        sum += v[i];
+        imageStore(sat, ivec3(x, y + i, layer), sum);
       }
-      shadowc_satCarry(chunk, local, tileCarry, groupCarry, chunkCarry);
     }
-    // The rest, fewer than a batch: the last chunk, one texel at a time.
-    precise SHADOWC_SAT_VALUE base = (tileCarry + groupCarry) + chunkCarry;
-    precise SHADOWC_SAT_VALUE local = SHADOWC_SAT_VALUE(0);
-    for (; y < size.y; ++y) {
-      local += imageLoad(sat, ivec3(x, y, layer));
-      precise SHADOWC_SAT_VALUE s = base + local;
-      imageStore(sat, ivec3(x, y, layer), s);
+    for (; y < size.y; ++y) {  // the rest, fewer than a batch
+      sum += imageLoad(sat, ivec3(x, y, layer));
+      imageStore(sat, ivec3(x, y, layer), sum);
     }
   }
 }

@@ -50,42 +50,23 @@ vec4 shadowc_satEncode(vec4 v) { return v; }
 // order: the table is bit-identical.
 #define SHADOWC_SAT_BATCH 8
 
-// The blocked order (Nehab et al. 2011, blocked prefix sums): each scan comes in two forms, the
-// serial one above (sat_rows.comp, sat_columns.comp: one invocation per row or column, for CPU
-// devices) and a parallel one (sat_rows_parallel.comp, sat_columns_parallel.comp: a workgroup of
-// SHADOWC_SAT_TILE_CHUNKS invocations per row or column, for GPUs; docs/manifest.md "Pass forms").
-// int32 sums mod 2^32 are exact in any order, fp32 sums are not, so both forms add in this one
-// order and give bit-identical tables: a row (column) is cut into chunks of SHADOWC_SAT_BATCH
-// texels, SHADOWC_SAT_GROUP_CHUNKS chunks make a group and as many groups a tile (2048 texels).
-// Texel j of a chunk stores
-//   ((tileCarry + groupCarry) + chunkCarry) + local_j
-// where local_j = the chunk's texels 0..j added left to right from 0, chunkCarry = the totals of
-// the chunks before it in its group added left to right from 0, groupCarry the same over the
-// group totals before its group in the tile, tileCarry over the tile totals before its tile. The
-// serial form keeps the three carries as it walks (shadowc_satCarry: one more add per texel than
-// a plain running sum, none more image access); the parallel form gives each invocation a chunk
-// and folds the carries in shared memory (sat_tiles.glsl). Every sum is `precise` (no
-// contraction, no reassociation), so the fp32 order is the written one.
+// Two forms (docs/manifest.md "Pass forms"). The serial scans (sat_rows.comp, sat_columns.comp:
+// one invocation per row or column, for CPU devices) add plain running sums. An int32 table also
+// has a parallel form (sat_rows_parallel.comp, sat_columns_parallel.comp: a workgroup of
+// SHADOWC_SAT_TILE_CHUNKS invocations per row or column, for GPUs) that adds in the blocked order
+// (Nehab et al. 2011, blocked prefix sums): a row (column) is cut into chunks of SHADOWC_SAT_BATCH
+// texels, SHADOWC_SAT_GROUP_CHUNKS chunks make a group and as many groups a tile (2048 texels);
+// texel j of a chunk stores ((tileCarry + groupCarry) + chunkCarry) + local_j, local_j the chunk's
+// texels 0..j, each carry the totals before it in its group, tile or row (sat_tiles.glsl). Sums mod
+// 2^32 are exact in any order, so both int32 forms give bit-identical tables. An fp32 table has the
+// serial form only: in the blocked order two neighbouring texels across a chunk boundary hold
+// independently rounded bases, where running sums differ by one rounded add, so small boxes err
+// more (vssm_fp32_centered_sat on two_planes, 256^2 screen, 1024^2 map: RMSE 0.0057 running, 0.0081
+// blocked; docs/accuracy.md). Every sum of the parallel form is `precise`.
 #define SHADOWC_SAT_GROUP_CHUNKS 16
 #define SHADOWC_SAT_TILE_CHUNKS 256  // SHADOWC_SAT_GROUP_CHUNKS^2, a literal: it is the local size
 #if SHADOWC_SAT_TILE_CHUNKS != SHADOWC_SAT_GROUP_CHUNKS * SHADOWC_SAT_GROUP_CHUNKS
 #error "a tile is SHADOWC_SAT_GROUP_CHUNKS groups of SHADOWC_SAT_GROUP_CHUNKS chunks"
 #endif
-
-// The serial form's carries after chunk `chunk` (counted from 0 along the row or column), whose
-// local sum over all its texels is `total`.
-void shadowc_satCarry(int chunk, SHADOWC_SAT_VALUE total, inout SHADOWC_SAT_VALUE tileCarry,
-                      inout SHADOWC_SAT_VALUE groupCarry, inout SHADOWC_SAT_VALUE chunkCarry) {
-  precise SHADOWC_SAT_VALUE c = chunkCarry + total;
-  chunkCarry = c;
-  if ((chunk + 1) % SHADOWC_SAT_GROUP_CHUNKS != 0) return;
-  precise SHADOWC_SAT_VALUE g = groupCarry + chunkCarry;
-  groupCarry = g;
-  chunkCarry = SHADOWC_SAT_VALUE(0);
-  if ((chunk + 1) % SHADOWC_SAT_TILE_CHUNKS != 0) return;
-  precise SHADOWC_SAT_VALUE t = tileCarry + groupCarry;
-  tileCarry = t;
-  groupCarry = SHADOWC_SAT_VALUE(0);
-}
 
 #endif

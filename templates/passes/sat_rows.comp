@@ -3,9 +3,10 @@
 // @shadowc:specialize
 // sat_rows.comp — first half of the summed-area table (vssm-yang2010 L2-L4 and sec. 6.4):
 // one invocation per row (dispatch mode "rows": gl_GlobalInvocationID.x = y) runs a serial
-// prefix sum along x of the encoded moments, for every layer, in the blocked order. The serial
-// (CPU) form; sat_rows_parallel.comp is the GPU form. Storage conventions, the order and the
-// inclusive box-sum rule are in sat_common.glsl; uint additions wrap mod 2^32 on purpose.
+// prefix sum along x of the encoded moments, for every layer: the serial (CPU) form; an int32
+// table also has the GPU form sat_rows_parallel.comp (sat_common.glsl "Two forms"). Storage
+// conventions and the inclusive box-sum rule are in sat_common.glsl; uint additions wrap mod 2^32
+// on purpose.
 // SHADOWC_SAT_FROM_DEPTH 1 (fused): the scan reads the light depth and warps it itself
 // (layer_moments.glsl), so no moments pass and no moments image exist: one texel read and one
 // texel write per texel and layer, against two of each for moments.comp followed by this pass.
@@ -46,71 +47,42 @@ void main() {
 #endif
   const int y = int(gl_GlobalInvocationID.x);
   if (y >= size.y) return;
-  // The blocked order (sat_common.glsl): a chunk is one batch.
 #if SHADOWC_SAT_FROM_DEPTH
   // x outer, layers inner: each depth texel is read once for all layers.
-  SHADOWC_SAT_VALUE tileCarry[SHADOWC_LAYERS], groupCarry[SHADOWC_LAYERS], chunkCarry[SHADOWC_LAYERS];
-  for (int layer = 0; layer < SHADOWC_LAYERS; ++layer)
-    tileCarry[layer] = groupCarry[layer] = chunkCarry[layer] = SHADOWC_SAT_VALUE(0);
-  int x = 0, chunk = 0;
-  for (; x + SHADOWC_SAT_BATCH <= size.x; x += SHADOWC_SAT_BATCH, ++chunk) {
+  SHADOWC_SAT_VALUE sum[SHADOWC_LAYERS];
+  for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) sum[layer] = SHADOWC_SAT_VALUE(0);
+  int x = 0;
+  for (; x + SHADOWC_SAT_BATCH <= size.x; x += SHADOWC_SAT_BATCH) {
     float d[SHADOWC_SAT_BATCH];  // read before any is written (sat_common.glsl)
     for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) d[i] = texelFetch(shadowDepth, ivec2(x + i, y), 0).r;
-    SHADOWC_SAT_VALUE base[SHADOWC_LAYERS], local[SHADOWC_LAYERS];
-    for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
-      precise SHADOWC_SAT_VALUE b = (tileCarry[layer] + groupCarry[layer]) + chunkCarry[layer];
-      base[layer] = b;
-      local[layer] = SHADOWC_SAT_VALUE(0);
-    }
     for (int i = 0; i < SHADOWC_SAT_BATCH; ++i)
       for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
-        precise SHADOWC_SAT_VALUE l = local[layer] + shadowc_satEncode(shadowc_layerMoments(d[i], layer));
-        local[layer] = l;
-        precise SHADOWC_SAT_VALUE s = base[layer] + l;
-        imageStore(satOut, ivec3(x + i, y, layer), s);
+        sum[layer] += shadowc_satEncode(shadowc_layerMoments(d[i], layer));
+        imageStore(satOut, ivec3(x + i, y, layer), sum[layer]);
       }
-    for (int layer = 0; layer < SHADOWC_LAYERS; ++layer)
-      shadowc_satCarry(chunk, local[layer], tileCarry[layer], groupCarry[layer], chunkCarry[layer]);
   }
-  // The rest, fewer than a batch: the last chunk, one texel at a time.
-  SHADOWC_SAT_VALUE base[SHADOWC_LAYERS], local[SHADOWC_LAYERS];
-  for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
-    precise SHADOWC_SAT_VALUE b = (tileCarry[layer] + groupCarry[layer]) + chunkCarry[layer];
-    base[layer] = b;
-    local[layer] = SHADOWC_SAT_VALUE(0);
-  }
-  for (; x < size.x; ++x) {
+  for (; x < size.x; ++x) {  // the rest, fewer than a batch
     const float d = texelFetch(shadowDepth, ivec2(x, y), 0).r;
     for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
-      precise SHADOWC_SAT_VALUE l = local[layer] + shadowc_satEncode(shadowc_layerMoments(d, layer));
-      local[layer] = l;
-      precise SHADOWC_SAT_VALUE s = base[layer] + l;
-      imageStore(satOut, ivec3(x, y, layer), s);
+      sum[layer] += shadowc_satEncode(shadowc_layerMoments(d, layer));
+      imageStore(satOut, ivec3(x, y, layer), sum[layer]);
     }
   }
 #else
   for (int layer = 0; layer < SHADOWC_LAYERS; ++layer) {
-    SHADOWC_SAT_VALUE tileCarry = SHADOWC_SAT_VALUE(0), groupCarry = tileCarry, chunkCarry = tileCarry;
-    int x = 0, chunk = 0;
-    for (; x + SHADOWC_SAT_BATCH <= size.x; x += SHADOWC_SAT_BATCH, ++chunk) {
+    SHADOWC_SAT_VALUE sum = SHADOWC_SAT_VALUE(0);
+    int x = 0;
+    for (; x + SHADOWC_SAT_BATCH <= size.x; x += SHADOWC_SAT_BATCH) {
       vec4 m[SHADOWC_SAT_BATCH];  // read before any is written (sat_common.glsl)
       for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) m[i] = imageLoad(momentsIn, ivec3(x + i, y, layer));
-      precise SHADOWC_SAT_VALUE base = (tileCarry + groupCarry) + chunkCarry;
-      precise SHADOWC_SAT_VALUE local = SHADOWC_SAT_VALUE(0);
       for (int i = 0; i < SHADOWC_SAT_BATCH; ++i) {
-        local += shadowc_satEncode(m[i]);
-        precise SHADOWC_SAT_VALUE s = base + local;
-        imageStore(satOut, ivec3(x + i, y, layer), s);
+        sum += shadowc_satEncode(m[i]);
+        imageStore(satOut, ivec3(x + i, y, layer), sum);
       }
-      shadowc_satCarry(chunk, local, tileCarry, groupCarry, chunkCarry);
     }
-    // The rest, fewer than a batch: the last chunk, one texel at a time.
-    precise SHADOWC_SAT_VALUE base = (tileCarry + groupCarry) + chunkCarry;
-    precise SHADOWC_SAT_VALUE local = SHADOWC_SAT_VALUE(0);
-    for (; x < size.x; ++x) {
-      local += shadowc_satEncode(imageLoad(momentsIn, ivec3(x, y, layer)));
-      precise SHADOWC_SAT_VALUE s = base + local;
-      imageStore(satOut, ivec3(x, y, layer), s);
+    for (; x < size.x; ++x) {  // the rest, fewer than a batch
+      sum += shadowc_satEncode(imageLoad(momentsIn, ivec3(x, y, layer)));
+      imageStore(satOut, ivec3(x, y, layer), sum);
     }
   }
 #endif

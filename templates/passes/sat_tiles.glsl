@@ -2,10 +2,11 @@
 // one workgroup of SHADOWC_SAT_TILE_CHUNKS invocations scans one row or column, a tile of
 // SHADOWC_SAT_TILE_CHUNKS chunks at a time, invocation i owning chunk i of the tile. Each
 // invocation adds up its own chunk; the chunk totals are then folded in shared memory into the
-// carries of the blocked order (sat_common.glsl), in exactly the order the serial form adds them:
+// carries of the blocked order (sat_common.glsl), in the order that defines:
 // 16 invocations fold one group each, then one folds the 16 group totals. That fold is two chains
 // of 16 shared-memory adds per tile, against the 2048 dependent texel steps of the serial scan.
-// No subgroup operation: their order of addition is the implementation's (fp32 would differ).
+// No subgroup operation: their order of addition is the implementation's (a deterministic order
+// keeps the form free of device-specific results).
 #ifndef SHADOWC_SAT_TILES_GLSL
 #define SHADOWC_SAT_TILES_GLSL
 

@@ -68,6 +68,20 @@ TEST(PassForms, ParallelSatFormHasAtLeast64InvocationsPerRowOfA2048Map) {
   }
 }
 
+// fp32 sums depend on their order and the blocked one errs more for small boxes
+// (templates/passes/sat_common.glsl "Two forms"): an fp32 table keeps the serial scans alone.
+TEST(PassForms, AnFp32SatHasTheSerialFormOnly) {
+  const driver::Result r =
+      driver::compileFile((test::sourceDir() / "samples/filters/vssm_fp32_centered_sat.shadow").string());
+  ASSERT_TRUE(r.artifact) << r.log;
+  for (const char* name : {"sat_rows", "sat_columns"}) {
+    EXPECT_TRUE(pass(r.artifact->manifest, name).forms.empty()) << name;
+    EXPECT_EQ(formsOf(pass(r.artifact->manifest, name)).size(), 1u) << name;
+  }
+  // Sibling: the int32 table's scans have both.
+  EXPECT_EQ(formsOf(pass(satManifest(), "sat_rows")).size(), 2u);
+}
+
 TEST(PassForms, AutoPicksTheFormDeclaredForTheDeviceType) {
   const Manifest m = satManifest();
   EXPECT_EQ(chosen(chooseForms(m, traits(FormDevice::Cpu), "auto")), "sat_rows=serial sat_columns=serial ");
