@@ -10,7 +10,8 @@ CommandRunner registerValidate(CLI::App& app) {
   CLI::App* sub = app.add_subcommand("validate", "Run a filter on a scene: per-pass GPU times and error vs. ray tracing");
   sub->add_option("filter", o->filterPath, "Filter description (.shadow), or a compiled manifest.json / its directory")->required();
   sub->add_option("--scene", o->scene, "Built-in scene name or scene .json file")->required();
-  sub->add_option("--size", o->size, "Screen width and height in pixels")->capture_default_str();
+  sub->add_option("--screen", o->size, "Screen width and height in pixels")->capture_default_str();
+  addRenamedOption(sub, "--size", "--screen");
   sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
   sub->add_option("--samples", o->samples, "Reference light samples per axis (N x N)")->capture_default_str();
   sub->add_option("--json", o->jsonOut, "Write metrics and timings as JSON");
@@ -19,7 +20,10 @@ CommandRunner registerValidate(CLI::App& app) {
   sub->add_flag("--validate", o->validation, "Enable the Khronos validation layer; any message fails the run");
   sub->add_option("--runs", o->runs, "Timed runs (the median is reported)")->capture_default_str();
   sub->add_option("--warmup", o->warmup, "Untimed warm-up runs (lavapipe JIT-compiles on first use)")->capture_default_str();
-  sub->add_flag("--no-cache", [o](int64_t) { o->useCache = false; }, "Do not read or write the reference cache");
+  sub->add_flag(
+      "--no-reference-cache", [o](int64_t) { o->useCache = false; },
+      "Trace the Embree reference again (do not read or write the reference cache)");
+  addRenamedOption(sub, "--no-cache", "--no-reference-cache", /*takesValue=*/false);
   return [o] { return runValidation(*o); };
 }
 
