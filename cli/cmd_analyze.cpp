@@ -25,6 +25,7 @@ CommandRunner registerAnalyze(CLI::App& app) {
   sub->add_option("--scene", o->scene, "Built-in scene name or scene .json file")->required();
   sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
   sub->add_option("--screen", o->screen, "Screen width and height in pixels")->capture_default_str();
+  addRenamedOption(sub, "--size", "--screen");
   sub->add_option("--contact-epsilon", o->contactEpsilon, "Contact distance, normalized depth")->capture_default_str();
   sub->add_option("--json", o->json, "Write the statistics as JSON here");
   sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");

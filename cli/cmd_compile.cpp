@@ -150,7 +150,8 @@ CommandRunner registerCompile(CLI::App& app) {
   auto args = std::make_shared<CompileArgs>();
   CLI::App* sub = app.add_subcommand("compile", "Compile a filter description to GLSL, SPIR-V and manifest.json");
   sub->add_option("input", args->input, "the .shadow filter description");
-  sub->add_option("-o,--output", args->outputDir, "output directory (created; files replaced atomically)");
+  sub->add_option("-o,--out", args->outputDir, "output directory (created; files replaced atomically)");
+  addRenamedOption(sub, "--output", "-o/--out");
   sub->add_option("--emit", args->emit,
                   "comma-separated subset of glsl,spirv,manifest,hlsl,msl,cpp (default: glsl,spirv,manifest)");
   sub->add_option("--lookup-set", args->lookupSet,

@@ -1,4 +1,4 @@
-// `shadowc demo [--out DIR]`: the README's first command. Compiles a VSSM sample (adaptive
+// `shadowc demo [-o DIR]`: the README's first command. Compiles a VSSM sample (adaptive
 // quadtree kernel with PCF fallback, vssm-yang2010 Algorithm 2; embedded in the binary) and
 // validates it on a built-in scene: per-pass times, error against the Embree reference, images
 // in out/demo/. The sample takes its light width from the scene (`area(size: scene)`), so the
@@ -74,10 +74,12 @@ CommandRunner registerDemo(CLI::App& app) {
   o->runs = 5;
   o->warmup = 2;
   CLI::App* sub = app.add_subcommand("demo", "Compile the VSSM sample and validate it on a built-in scene");
-  sub->add_option("--out", *out, "Directory for images and report.json")->capture_default_str();
+  sub->add_option("-o,--out", *out, "Directory for images and report.json")->capture_default_str();
+  addRenamedOption(sub, "--output", "-o/--out");
   sub->add_option("--filter", o->filterPath, "Embedded sample to run (samples/filters/NAME)")->capture_default_str();
   sub->add_option("--scene", o->scene, "Built-in scene name or scene .json file")->capture_default_str();
-  sub->add_option("--size", o->size, "Screen width and height in pixels")->capture_default_str();
+  sub->add_option("--screen", o->size, "Screen width and height in pixels")->capture_default_str();
+  addRenamedOption(sub, "--size", "--screen");
   sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");
   sub->add_flag("--validate", o->validation, "Enable the Khronos validation layer; any message fails the run");
   return [o, out] {

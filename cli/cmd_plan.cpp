@@ -69,8 +69,10 @@ CommandRunner registerPlan(CLI::App& app) {
   sub->add_option("--scene", o->scenes, "Built-in scene name or scene .json file (repeat for several)");
   sub->add_option("--max-rmse", o->maxRmse, "Largest RMSE against the ground truth, on every scene");
   sub->add_option("--budget-ms", o->budgetMs, "Largest GPU time per frame (ms), on every scene");
-  sub->add_option("-o,--output", o->out, "Write the planned filter description here");
+  sub->add_option("-o,--out", o->out, "Write the planned filter description here");
+  addRenamedOption(sub, "--output", "-o/--out");
   sub->add_option("--screen", o->screen, "Screen width and height in pixels")->capture_default_str();
+  addRenamedOption(sub, "--size", "--screen");
   sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
   sub->add_option("--samples", o->samples, "Reference light samples per axis (N x N)")->capture_default_str();
   sub->add_option("--runs", o->runs, "Timed runs per confirmation (the median counts)")->capture_default_str();

@@ -70,6 +70,12 @@ int runSweepCommand(const SweepArgs& a) {
   const sweep::SweepOutcome outcome = sweep::runSweep(spec, o, stderr);
   printSkipped(outcome.results);
   const int rc = finish(outcome.results, o.outDir);
+  // No row is no answer: a sweep whose every variant was refused (or failed) must not exit 0.
+  if (outcome.results.rows.empty() && !outcome.results.skipped.empty()) {
+    fmt::print(stderr, "shadowc: error: nothing ran: all {} variant(s) of sweep '{}'{} were skipped (listed above)\n",
+               outcome.results.skipped.size(), spec.name, o.shard.count > 1 ? " (shard " + a.shard + ")" : "");
+    return 1;
+  }
   if (outcome.validationMessages > 0) {
     fmt::print(stderr, "shadowc: error: the validation layer reported {} message(s)\n", outcome.validationMessages);
     return 1;
@@ -87,6 +93,7 @@ CommandRunner registerSweep(CLI::App& app) {
   sub->add_option("spec", a->spec, "Sweep description (.json, docs/sweep.md)");
   sub->add_option("-o,--out", a->out, "Output folder: results, plots, report.html, and the cache that resumes a sweep")
       ->required();
+  addRenamedOption(sub, "--output", "-o/--out");
   sub->add_option("--shard", a->shard, "Run only slice I of N (jobs j with j mod N == I), e.g. 0/4")
       ->capture_default_str();
   sub->add_option("-j,--jobs", a->jobs, "Threads that compile variants (0 = one per hardware thread)")
@@ -94,6 +101,7 @@ CommandRunner registerSweep(CLI::App& app) {
   sub->add_option("--device", a->device, "Vulkan device: index or name substring (default: llvmpipe)");
   sub->add_flag("--validate", a->validation, "Enable the Khronos validation layer; any message fails the sweep");
   sub->add_flag("--no-reference-cache", a->noReferenceCache, "Trace every Embree reference again (no cache)");
+  addRenamedOption(sub, "--no-cache", "--no-reference-cache", /*takesValue=*/false);
   sub->add_option("--progress", a->progress, "Progress display: auto (bar on a terminal), bar, lines")
       ->check(CLI::IsMember({"auto", "bar", "lines"}))
       ->capture_default_str();

@@ -12,7 +12,8 @@ CommandRunner registerValidate(CLI::App& app) {
   sub->add_option("filter", o->filterPath, "Filter description (.shadow), or a compiled manifest.json / its directory")
       ->required();
   sub->add_option("--scene", o->scene, "Built-in scene name or scene .json file")->required();
-  sub->add_option("--size", o->size, "Screen width and height in pixels")->capture_default_str();
+  sub->add_option("--screen", o->size, "Screen width and height in pixels")->capture_default_str();
+  addRenamedOption(sub, "--size", "--screen");
   sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
   sub->add_option("--samples", o->samples, "Reference light samples per axis (N x N)")->capture_default_str();
   sub->add_option("--json", o->jsonOut, "Write metrics and timings as JSON");
@@ -26,7 +27,9 @@ CommandRunner registerValidate(CLI::App& app) {
                   "Form of passes that have several: auto (by the device), serial, parallel (default: "
                   "env SHADOWC_PASS_FORM, else auto)");
   sub->add_flag(
-      "--no-cache", [o](int64_t) { o->useCache = false; }, "Do not read or write the reference cache");
+      "--no-reference-cache", [o](int64_t) { o->useCache = false; },
+      "Trace the Embree reference again (do not read or write the reference cache)");
+  addRenamedOption(sub, "--no-cache", "--no-reference-cache", /*takesValue=*/false);
   return [o] { return runValidation(*o); };
 }
 

@@ -4,6 +4,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <string>
 #include <string_view>
 #include <utility>
 #include <vector>
@@ -15,6 +16,12 @@ int main(int argc, char** argv) {
   CLI::App app{"shadowc " SHADOWC_VERSION " - a compiler for soft-shadow filters", "shadowc"};
   app.set_version_flag("--version", "shadowc " SHADOWC_VERSION);
   app.require_subcommand(1);
+  // Usage errors in the same form as every other error (one "error:" line, glslc style).
+  app.failure_message([](const CLI::App* a, const CLI::Error& e) {
+    std::string m = "shadowc: error: " + std::string(e.what()) + "\n";
+    if (a->get_help_ptr() != nullptr) m += "Run with " + a->get_help_ptr()->get_name() + " for more information.\n";
+    return m;
+  });
   std::vector<std::pair<CLI::App*, CommandRunner>> commands;
   auto add = [&](CommandRunner (*reg)(CLI::App&)) {
     const size_t before = app.get_subcommands({}).size();

@@ -23,17 +23,12 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
-bool isManifestPath(const std::string& path) {
-  const std::filesystem::path p(path);
-  return p.filename() == "manifest.json" ||
-         (std::filesystem::is_directory(p) && std::filesystem::exists(p / "manifest.json"));
-}
-
-// The passes to run: a manifest written by `shadowc compile` (what an engine built earlier), or
-// a filter description compiled here by the driver. Empty when it did not compile (the driver's
-// log is on stderr).
+// The passes to run: a manifest written by `shadowc compile` (what an engine built earlier; known
+// by its content, not its name), or a filter description compiled here by the driver. Empty when
+// it did not compile (the driver's log is on stderr).
 std::optional<CompiledPasses> passesToRun(const ValidationOptions& o) {
-  if (isManifestPath(o.filterPath) && o.filterSource.empty()) return CompiledPasses::fromDirectory(o.filterPath);
+  if (o.filterSource.empty() && CompiledPasses::isManifest(o.filterPath))
+    return CompiledPasses::fromDirectory(o.filterPath);
   const driver::Result r =
       o.filterSource.empty() ? driver::compileFile(o.filterPath) : driver::compileSource(o.filterSource, o.filterPath);
   if (!r.log.empty()) fmt::print(stderr, "{}", r.log);
@@ -95,7 +90,7 @@ std::optional<CapReport> capReport(const Manifest& manifest, const rt::PreparedS
 
 int runValidation(const ValidationOptions& o) {
   if (o.size == 0 || o.map == 0 || o.samples < 1 || o.runs < 1 || o.warmup < 0)
-    throw std::invalid_argument("--size, --map, --samples and --runs must be positive, --warmup >= 0");
+    throw std::invalid_argument("--screen, --map, --samples and --runs must be positive, --warmup >= 0");
 
   // 1. The passes to run.
   const std::optional<CompiledPasses> compiled = passesToRun(o);
@@ -108,7 +103,7 @@ int runValidation(const ValidationOptions& o) {
 
   // 2. Scene (its errors come before device errors), device, rasterized inputs and reference.
   rt::Scene loaded = rt::loadScene(o.scene);
-  // (A light type that differs from the scene's is refused by runOnScene, for every caller.)
+  rt::checkLightType(manifest, loaded.light.type, loaded.name);  // before the device, raster and trace
   if (facts.sun && facts.lightFolded && std::abs(facts.lightSize - double(loaded.light.angleDegrees)) > 1e-6)
     fmt::print(stderr,
                "shadowc: warning: the filter's sun angle {} differs from scene '{}' sun angle {}; "
@@ -224,6 +219,14 @@ int runValidation(const ValidationOptions& o) {
   if (messages > 0) {
     std::fflush(stdout);
     fmt::print(stderr, "shadowc: error: the validation layer reported {} message(s)\n", messages);
+    return 1;
+  }
+  if (metrics.compared == 0) {  // "rmse 0" over no pixel would compare nothing
+    std::fflush(stdout);
+    fmt::print(
+        stderr,
+        "shadowc: error: nothing compared: the result or the reference is non-finite on all {} geometry pixels\n",
+        metrics.pixels);
     return 1;
   }
   return 0;

@@ -2,7 +2,7 @@
 """Regenerates the sample x scene section of docs/accuracy.md from one `shadowc sweep`:
 
   scripts/accuracy_report.py [--shadowc build/cli/shadowc] [--out /tmp/accuracy_report]
-                             [--size 256] [--map 1024] [--samples 16] [--scenes a,b] [--filters x,y]
+                             [--screen 256] [--map 1024] [--samples 16] [--scenes a,b] [--filters x,y]
                              [--reuse] [--doc docs/accuracy.md]
 
 writes OUT/accuracy.json (every samples/filters/*.shadow, each on every built-in spot-light scene
@@ -17,7 +17,7 @@ listed, not run); then replaces the text between
 with the RMSE table, the over-darkening (acne) table and, per scene, the error image of its
 worst row (copied to docs/accuracy/worst_<scene>.png). Everything else in the file is kept.
 The defaults are the issue-9 settings (256^2 screen, 1024^2 map, 16x16 reference samples);
-smaller ones (e.g. --size 128 --map 512 --samples 8) make a quick run. --reuse reads an existing
+smaller ones (e.g. --screen 128 --map 512 --samples 8) make a quick run. --reuse reads an existing
 OUT/sweep/results.json instead of running the sweep.
 
 It also measures the per-technique bounds (--only bounds for that part alone, --only sweep for the other): it runs
@@ -106,7 +106,7 @@ def sweep_description(a, scenes, filters, light_type):
         "name": "accuracy" if light_type == "spot" else "accuracy-" + light_type,
         "filters": [filter_entry(f, light_type) for f in filters] + (REF_FILTERS if light_type == "spot" else []),
         "scenes": scenes,
-        "screen": a.size,
+        "screen": a.screen,
         "map": a.map,
         "reference_samples": a.samples,
         "runs": 1,
@@ -165,7 +165,7 @@ def section(res, folder, seconds, a, doc_dir):
     r0 = rows[0]
     took = " in {:.0f} s wall".format(seconds) if seconds else ""
     what = "{} samples of samples/filters/ on {} built-in scenes".format(len(samples), len(scenes))
-    flags = "--size {} --map {} --samples {}".format(a.size, a.map, a.samples)
+    flags = "--screen {} --map {} --samples {}".format(a.screen, a.map, a.samples)
     if a.scenes:
         flags += " --scenes " + a.scenes
     if a.filters:
@@ -440,7 +440,8 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--shadowc", default=os.path.join(ROOT, "build", "cli", "shadowc"))
     ap.add_argument("--out", default="/tmp/accuracy_report")
-    ap.add_argument("--size", type=int, default=256)
+    ap.add_argument("--screen", type=int, default=256)
+    ap.add_argument("--size", type=int, help=argparse.SUPPRESS)  # the old spelling, refused below
     ap.add_argument("--map", type=int, default=1024)
     ap.add_argument("--samples", type=int, default=16)
     ap.add_argument("--scenes", help="comma-separated scene names (default: every built-in scene)")
@@ -450,6 +451,8 @@ def main():
     ap.add_argument("--tests-gpu", default=os.path.join(ROOT, "build", "tests", "tests_gpu"))
     ap.add_argument("--only", choices=["sweep", "bounds"], help="regenerate one of the two sections")
     a = ap.parse_args()
+    if a.size is not None:
+        ap.error("--size: this option is now spelled --screen (as in shadowc, docs/cli.md)")
     a.shadowc = os.path.abspath(a.shadowc)
     if a.only == "bounds":
         with open(a.doc) as f:

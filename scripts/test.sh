@@ -4,7 +4,8 @@
 #   sanitize  scripts/sanitize.sh: install what is missing, build everything with ASan + UBSan
 #             (build-asan/) and run the whole ctest suite in it (extra arguments go to this ctest)
 #   fuzz      scripts/fuzz.sh: each libFuzzer target for SHADOWC_FUZZ_SECONDS (default 60; build-fuzz/)
-#   suite     scripts/build.sh, then the whole suite uninstrumented in build/ (the demo's build)
+#   suite     scripts/build.sh (all of build/, where the demo builds shadowc alone), then the whole
+#             suite uninstrumented there
 # SHADOWC_TEST_STAGES picks stages (default "sanitize fuzz"; e.g. SHADOWC_TEST_STAGES=suite).
 # Why the default runs the suite only instrumented: the same 1083 tests, once, every one also
 # checked for memory errors, leaks and undefined behaviour; a second, uninstrumented build and run

@@ -9,6 +9,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <thread>
 #include <tuple>
 
@@ -150,6 +151,12 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
       if (!o.shard.contains(c.index * e.variants.size() + v.index) || !checked[v.index].spec ||
           !compiled.at(v.index).passes)
         continue;
+      try {  // a light type that is not the scene's: refused before the case's reference is traced
+        rt::checkLightType(compiled.at(v.index).passes->manifest, scenes[c.index].lightType, scenes[c.index].name);
+      } catch (const std::invalid_argument& ex) {
+        res.skipped.push_back({v.index, v.label, "SW002", fmt::format("{}: {}", c.label, ex.what())});
+        continue;
+      }
       if (int(c.map) > checked[v.index].spec->mapSize) {  // as validate: its precision checks assume at most that
         res.skipped.push_back({v.index, v.label, "SW004",
                                fmt::format("{}: map {} exceeds the filter's map_size {}", c.label, c.map,

@@ -68,6 +68,8 @@ ResolvedScene resolveScene(const SceneEntry& entry, const std::filesystem::path&
   const rt::Scene scene = rt::loadScene(r.nameOrPath);
   r.hash = scene.contentHash();
   r.lightWidth = scene.light.type == rt::LightType::Point ? 2.0f * scene.light.radius : scene.light.width;
+  r.lightType = scene.light.type;
+  r.name = scene.name;
   return r;
 }
 

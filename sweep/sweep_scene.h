@@ -15,6 +15,8 @@ struct ResolvedScene {
   std::string nameOrPath;  // what rt::SceneSettings::scene gets
   std::string hash;        // rt::Scene::contentHash()
   float lightWidth = 0;
+  rt::LightType lightType = rt::LightType::Spot;  // for the light check before any trace
+  std::string name;                               // rt::Scene::name
 };
 
 // Throws rt::SceneError (the loader's message) for a bad scene.

@@ -1,5 +1,6 @@
 #include "manifest/compiled_passes.h"
 
+#include <cctype>
 #include <fstream>
 #include <iterator>
 #include <stdexcept>
@@ -22,6 +23,15 @@ CompiledPasses CompiledPasses::fromDirectory(const std::filesystem::path& dirOrM
       c.files.emplace(form.spirv, std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>()));
     }
   return c;
+}
+
+bool CompiledPasses::isManifest(const std::filesystem::path& path) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) return std::filesystem::exists(path / "manifest.json", ec);
+  std::ifstream in(path, std::ios::binary);
+  for (int ch; (ch = in.get()) != std::ifstream::traits_type::eof();)
+    if (!std::isspace(ch)) return ch == '{';
+  return false;
 }
 
 }  // namespace shadowc

@@ -19,6 +19,10 @@ struct CompiledPasses {
   // wrong version or a malformed file) and every .spv it names. Throws std::runtime_error
   // naming a missing file.
   static CompiledPasses fromDirectory(const std::filesystem::path& dirOrManifest);
+  // Whether `path` is what fromDirectory reads, by content, whatever its name: a directory with
+  // a manifest.json, or a file whose first non-whitespace byte opens a JSON object (a filter
+  // description cannot: its first token is `filter`, docs/dsl.md "Grammar").
+  static bool isManifest(const std::filesystem::path& path);
 };
 
 }  // namespace shadowc

@@ -407,6 +407,10 @@ nlohmann::ordered_json toJson(const Manifest& m) {
 
 Manifest manifestFromJson(const nlohmann::json& j) {
   if (!j.is_object()) throw ManifestError("manifest: not a JSON object");
+  // Other JSON (a scene, a sweep description) named where a manifest goes: say what it is not.
+  if (!j.contains("format_version"))
+    throw ManifestError(
+        "not a shadowc manifest (no \"format_version\"; `shadowc compile FILTER.shadow -o DIR` writes one)");
   Manifest m;
   m.formatVersion = get<int>(j, "format_version");
   if (m.formatVersion != kManifestFormatVersion)

@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <utility>
 
 #include "dsl/lexer.h"
 #include "dsl/parser.h"
@@ -37,6 +38,29 @@ void sortByLocation(std::vector<Diagnostic>& diagnostics) {
   for (auto& g : groups)
     for (Diagnostic& d : g) diagnostics.push_back(std::move(d));
 }
+// Where a JSON object opens the text: a filter's first token is `filter` (docs/dsl.md "Grammar"),
+// so a `{` before it, past whitespace and comments, is JSON (a manifest, a scene) that the lexer
+// would answer with an error per quote. {0, 0} when the text does not start that way.
+std::pair<int, int> openingBrace(const std::string& text) {
+  int line = 1;
+  size_t lineBegin = 0;
+  for (size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
+    if (ch == '#') {
+      i = text.find('\n', i);
+      if (i == std::string::npos) break;
+    }
+    if (text[i] == '\n') {
+      ++line, lineBegin = i + 1;
+      continue;
+    }
+    if (ch == ' ' || ch == '\t' || ch == '\r') continue;
+    if (ch == '{') return {line, int(i - lineBegin) + 1};
+    break;
+  }
+  return {0, 0};
+}
+
 }  // namespace
 
 std::string formatDiagnostics(const LoadResult& result) { return formatDiagnostics(result.diagnostics, result.source); }
@@ -60,6 +84,10 @@ LoadResult loadFilterSource(const std::string& text, const std::string& fileName
     return result;
   }
   result.source = text;
+  if (const auto [line, column] = openingBrace(text); line > 0) {
+    sink.report(dsl::DiagId::jsonNotFilter, line, column, 1);
+    return result;
+  }
   std::vector<int> badLines;
   const std::vector<dsl::Token> tokens = dsl::lex(result.source, sink, &badLines);
   if (sink.stopped()) return result;

@@ -37,6 +37,12 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
   const std::vector<float> positions = p->raster.gbufferPosition.floats();
   p->mask = geometryMask(positions);
   if (!settings.traceReference) return p;
+  // Metrics over no pixel would read "rmse 0": refuse before the trace, the expensive part.
+  if (std::none_of(p->mask.begin(), p->mask.end(), [](uint8_t m) { return m != 0; }))
+    throw SceneError(fmt::format(
+        "scene '{}': the camera sees no geometry ({}x{} pixels, none on a surface), so nothing would be compared "
+        "against the reference: aim camera.eye/target at the objects (docs/scenes.md)",
+        p->scene.name, settings.screen, settings.screen));
   ProgressFn onProgress;
   if (progress)
     onProgress = [&progress](const ReferenceProgress& r) {
@@ -65,15 +71,14 @@ std::shared_ptr<const PreparedScene> prepareSceneWithCascades(VulkanContext& ctx
   return p;
 }
 
-RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene) {
+void checkLightType(const Manifest& manifest, LightType sceneLight, const std::string& sceneName) {
   // The runtime knows no technique, but the projection is the frame's: a filter reads the map
   // through its light's (frame.glsl or frame_ortho.glsl), so a sun filter needs a sun scene.
   // A point filter reads a cube atlas (frame_cube.glsl), so it needs a point scene.
-  const nlohmann::json& spec = passes.manifest.spec;
+  const nlohmann::json& spec = manifest.spec;
   const std::string filterType = spec.contains("light") && spec["light"].is_object()
                                      ? spec["light"].value("type", std::string("spot"))
                                      : std::string("spot");
-  const LightType sceneLight = scene.scene.light.type;
   const std::string sceneType = sceneLight == LightType::Sun     ? "sun"
                                 : sceneLight == LightType::Point ? "point"
                                                                  : "spot";
@@ -81,10 +86,15 @@ RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene) 
   if (filterType != sceneType)
     throw std::invalid_argument(fmt::format(
         "filter '{}' is for a {} but scene '{}' has a {}: compile the filter with 'light {}' (docs/dsl.md \"light\")",
-        passes.manifest.filter, what(filterType), scene.scene.name, what(sceneType),
+        manifest.filter, what(filterType), sceneName, what(sceneType),
         sceneType == "sun"     ? "sun"
         : sceneType == "point" ? "point(radius: scene)"
                                : "area(size: scene)"));
+}
+
+RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene) {
+  checkLightType(passes.manifest, scene.scene.light.type, scene.scene.name);
+  const nlohmann::json& spec = passes.manifest.spec;
   if (cascadeConfigFromSpec(spec) != scene.settings.cascades)
     throw std::invalid_argument(fmt::format(
         "filter '{}' has {} cascades but scene '{}' was prepared with {}: prepare it with the manifest's cascades "

@@ -54,6 +54,7 @@ struct PreparedScene {
 using ReferenceProgressFn = std::function<void(double fraction, double seconds, double raysPerSecond)>;
 
 // Loads settings.scene (loadScene: one located message for a bad name or file), then as below.
+// Throws SceneError, before tracing, when the camera sees no geometry (nothing to compare).
 std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, const SceneSettings& settings,
                                                   const ReferenceProgressFn& progress = {});
 // A scene already loaded (a caller that looks at it before the device exists: `validate`
@@ -72,6 +73,11 @@ struct SceneRunResult {
   RunOutputs outputs;  // visibility, timing (when runs > 0)
   Metrics metrics;     // outputs.visibility against the reference over the geometry mask
 };
+
+// Throws std::invalid_argument when the filter's light type (spot, sun, point) is not the
+// scene's: a check on the manifest and the scene's light alone, so a caller can make it before
+// rasterizing and tracing (`validate`, `sweep`; sceneInputs makes it again).
+void checkLightType(const Manifest& manifest, LightType sceneLight, const std::string& sceneName);
 
 // The harness inputs of a prepared scene for a filter: its frame, light depth and G-buffer.
 // Throws std::invalid_argument when the filter's light type or cascades are not the scene's.

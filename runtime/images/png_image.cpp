@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <stdexcept>
 #include <string>
 
@@ -23,6 +24,7 @@
 #define STB_IMAGE_IMPLEMENTATION
 #define STB_IMAGE_STATIC
 #define STBI_ONLY_PNG
+#include <stb/stb_easy_font.h>  // a public-domain bitmap font made of quads: the panel labels
 #include <stb/stb_image.h>
 #pragma GCC diagnostic pop
 
@@ -50,6 +52,36 @@ void errorColor(float r, float ref, float fullScale, uint8_t* out) {
     out[0] = fade, out[1] = fade, out[2] = 255;
   }
 }
+
+// Text in the RGB image at (x, y) (top left), each font unit `scale` pixels, clipped to the
+// columns [clipX0, clipX1). stb_easy_font gives axis-aligned quads in font units.
+void drawText(Rgb8Image& img, int x, int y, const std::string& text, int scale, int clipX0, int clipX1) {
+  std::string printable = text;
+  for (char& ch : printable)
+    if (ch < 32 || ch > 126) ch = '?';  // the font covers printable ASCII only
+  std::vector<char> quads(printable.size() * 300 + 64);
+  const int n = stb_easy_font_print(0, 0, printable.data(), nullptr, quads.data(), int(quads.size()));
+  for (int q = 0; q < n; ++q) {
+    float x0 = 1e9f, y0 = 1e9f, x1 = -1e9f, y1 = -1e9f;
+    for (int v = 0; v < 4; ++v) {  // 4 vertices of 16 bytes: x, y, z (float), colour (4 bytes)
+      float xy[2];
+      std::memcpy(xy, &quads[size_t(q * 4 + v) * 16], sizeof xy);
+      x0 = std::min(x0, xy[0]), x1 = std::max(x1, xy[0]), y0 = std::min(y0, xy[1]), y1 = std::max(y1, xy[1]);
+    }
+    const int px0 = std::max({x + int(std::lround(x0 * float(scale))), clipX0, 0});
+    const int px1 = std::min({x + int(std::lround(x1 * float(scale))), clipX1, int(img.width)});
+    const int py0 = std::max(y + int(std::lround(y0 * float(scale))), 0);
+    const int py1 = std::min(y + int(std::lround(y1 * float(scale))), int(img.height));
+    for (int py = py0; py < py1; ++py)
+      for (int px = px0; px < px1; ++px) std::fill_n(&img.pixels[(size_t(py) * img.width + size_t(px)) * 3], 3, 0);
+  }
+}
+
+int textWidth(const std::string& text) { return stb_easy_font_width(const_cast<char*>(text.c_str())); }
+
+// The largest scale (1..3) at which `text` fits `width` pixels; 1 when it does not fit at all
+// (then it is clipped).
+int fitScale(const std::string& text, int width) { return std::clamp(width / std::max(1, textWidth(text)), 1, 3); }
 
 }  // namespace
 
@@ -86,6 +118,39 @@ Rgb8Image sideBySide(const std::vector<float>& result, const std::vector<float>&
       std::copy_n(&e.pixels[s * 3], 3, row + size_t(2 * width + 2 + x) * 3);
     }
   }
+  return out;
+}
+
+Rgb8Image labelledComparison(const std::vector<float>& result, const std::vector<float>& reference, uint32_t width,
+                             uint32_t height, float fullScale) {
+  const Rgb8Image panels = sideBySide(result, reference, width, height, fullScale);
+  const std::string labels[3] = {"result", "reference", "error = result - reference"};
+  const std::string legend = "error: blue = result too dark, red = too bright";
+  const int w = int(width);
+  int scale = 3;  // one scale for every label: the smallest that fits each
+  for (const std::string& l : labels) scale = std::min(scale, fitScale(l, w));
+  const int top = 13 * scale, bar = 6 * scale, bottom = 3 * scale + bar + 2 * scale + 12 * scale;
+  Rgb8Image out{panels.width, uint32_t(top) + height + uint32_t(bottom), 3, {}};
+  out.pixels.assign(size_t(out.width) * out.height * 3, 255);  // strips white
+  std::copy(panels.pixels.begin(), panels.pixels.end(), out.pixels.begin() + size_t(top) * out.width * 3);
+  for (int p = 0; p < 3; ++p)
+    drawText(out, p * (w + 1) + scale, 2 * scale, labels[p], scale, p * (w + 1), p * (w + 1) + w);
+  // The heat map's colour bar under the error panel: -fullScale at its left, +fullScale at its right.
+  const int barY = top + int(height) + 3 * scale, errorX = 2 * (w + 1);
+  for (int x = 0; x < w; ++x) {
+    const float e = w > 1 ? fullScale * (2.0f * float(x) / float(w - 1) - 1.0f) : 0.0f;
+    uint8_t rgb[3];
+    errorColor(e, 0.0f, fullScale, rgb);
+    for (int y = barY; y < barY + bar; ++y)
+      std::copy_n(rgb, 3, &out.pixels[(size_t(y) * out.width + size_t(errorX + x)) * 3]);
+  }
+  const int textY = barY + bar + 2 * scale;
+  const std::string low = fmt::format("-{:g}", fullScale), high = fmt::format("+{:g}", fullScale);
+  drawText(out, errorX, textY, low, scale, errorX, errorX + w);
+  drawText(out, errorX + w / 2 - textWidth("0") * scale / 2, textY, "0", scale, errorX, errorX + w);
+  drawText(out, errorX + w - textWidth(high) * scale, textY, high, scale, errorX, errorX + w);
+  const int legendScale = std::min(scale, fitScale(legend, errorX - 2 * scale));
+  drawText(out, scale, barY, legend, legendScale, 0, errorX - scale);
   return out;
 }
 
@@ -127,7 +192,7 @@ void writeErrorPng(const std::filesystem::path& path, const std::vector<float>& 
 
 void writeComparisonPng(const std::filesystem::path& path, const std::vector<float>& result,
                         const std::vector<float>& reference, uint32_t width, uint32_t height, float fullScale) {
-  writePng(path, sideBySide(result, reference, width, height, fullScale));
+  writePng(path, labelledComparison(result, reference, width, height, fullScale));
 }
 
 }  // namespace shadowc::rt

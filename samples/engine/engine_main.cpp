@@ -14,10 +14,12 @@
 
 #include <algorithm>
 #include <bit>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -255,17 +257,48 @@ struct EngineFrame {
 };
 static_assert(sizeof(EngineFrame) == 112);
 
+constexpr const char* kUsage =
+    "usage: shadowc_engine_sample OUT_DIR [SCENE] [SCREEN] [MAP]\n"
+    "Runs the build-time compiled filter and the engine's lighting shader on a built-in scene\n"
+    "(docs/integration.md).\n"
+    "  OUT_DIR  folder for shaded.png and shadow_term.f32 (SCREEN^2 float32, row 0 = top)\n"
+    "  SCENE    built-in scene name or scene .json file (default two_planes)\n"
+    "  SCREEN   screen width and height in pixels (default 256)\n"
+    "  MAP      shadow-map side in texels (default 1024)\n"
+    "With SHADOWC_VALIDATION=1 any Vulkan validation message fails the run.\n";
+
+// A positive whole number, or a message naming the argument (std::stoul would say "stoul").
+uint32_t positiveArgument(const char* text, const char* name) {
+  char* end = nullptr;
+  const unsigned long v = std::strtoul(text, &end, 10);
+  if (*text < '0' || *text > '9' || *end != '\0' || v == 0 || v > (1u << 16))
+    throw std::invalid_argument(fmt::format("{} must be a whole number in [1, 65536], got '{}'", name, text));
+  return uint32_t(v);
+}
+
 }  // namespace
 
 int run(int argc, char** argv) {
-  if (argc < 2) {
-    fmt::print(stderr, "usage: shadowc_engine_sample OUT_DIR [SCENE] [SCREEN] [MAP]\n");
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") {
+      fmt::print("{}", kUsage);
+      return 0;
+    }
+    // No option names a folder: `--help`-like input must not become ./--help/shaded.png.
+    if (arg.size() > 1 && arg[0] == '-') {
+      fmt::print(stderr, "shadowc_engine_sample: error: unknown option '{}'\n{}", arg, kUsage);
+      return 2;
+    }
+  }
+  if (argc < 2 || argc > 5) {
+    fmt::print(stderr, "{}", kUsage);
     return 2;
   }
   const std::filesystem::path out = argv[1];
   const std::string sceneName = argc > 2 ? argv[2] : "two_planes";
-  const uint32_t screen = argc > 3 ? uint32_t(std::stoul(argv[3])) : 256;
-  const uint32_t map = argc > 4 ? uint32_t(std::stoul(argv[4])) : 1024;
+  const uint32_t screen = argc > 3 ? positiveArgument(argv[3], "SCREEN") : 256;
+  const uint32_t map = argc > 4 ? positiveArgument(argv[4], "MAP") : 1024;
   std::filesystem::create_directories(out);
 
   rt::VulkanContext ctx;  // lavapipe; SHADOWC_VALIDATION=1 turns the Khronos layer on

@@ -12,7 +12,7 @@
 namespace shadowc {
 namespace {
 
-const std::string kSmall = " --size 64 --map 256 --samples 2 --runs 1 --warmup 0 --no-cache";
+const std::string kSmall = " --screen 64 --map 256 --samples 2 --runs 1 --warmup 0 --no-reference-cache";
 
 std::string pcss(int max) {
   return "filter pcss_cap {\n    light area(size: scene)\n    depth\n    blocker search(16, pattern: poisson)\n"

@@ -12,7 +12,7 @@ namespace {
 
 const std::string kFilter = (test::sourceDir() / "samples/filters/pcf_grid5x5.shadow").string();
 // Small, so a run that gets through is quick.
-const std::string kSmall = " --size 32 --map 256 --samples 2 --runs 1 --warmup 0 --no-cache";
+const std::string kSmall = " --screen 32 --map 256 --samples 2 --runs 1 --warmup 0 --no-reference-cache";
 
 int errorLines(const std::string& err) {
   int n = 0;

@@ -6,11 +6,14 @@
 // is Lambert N·L (from the light's centre) times that term, within 8-bit rounding. Sibling: the
 // same comparison against another filter (hard PCF) must fail.
 #include <gtest/gtest.h>
+#include <sys/wait.h>
 
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <glm/glm.hpp>
+#include <string>
 
 #include "emit/emit_support.h"
 #include "runtime/harness/run_harness.h"
@@ -117,6 +120,50 @@ TEST(EngineSample, RunsWithValidationOnAndItsShadowTermEqualsTheHarness) {
       worstTerm, worstColour, partial, worstOther);
   EXPECT_EQ(ctx.validationMessageCount(), 0u) << ::testing::PrintToString(ctx.validationMessages());
   std::filesystem::remove_all(out);
+}
+
+// `--help` prints the usage and writes nothing (it once became the output folder ./--help/);
+// an unknown option is an error naming it, also writing nothing. Both run in an empty folder
+// so that anything written shows. The run above is the sibling that does write shaded.png.
+struct EngineRun {
+  int code = -1;
+  std::string out, err;
+  size_t entries = 0;  // what the run left in its working folder
+};
+EngineRun runEngineIn(const std::string& tag, const std::string& args) {
+  const auto cwd = test::freshTempDir(tag), logs = test::freshTempDir(tag + "-logs");
+  const std::string cmd = "cd " + cwd.string() + " && " + std::string(SHADOWC_ENGINE_BINARY) + " " + args + " >" +
+                          (logs / "out.txt").string() + " 2>" + (logs / "err.txt").string();
+  const int status = std::system(cmd.c_str());
+  EngineRun r;
+  r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  r.out = test::readFile(logs / "out.txt");
+  r.err = test::readFile(logs / "err.txt");
+  for ([[maybe_unused]] const auto& e : std::filesystem::directory_iterator(cwd)) ++r.entries;
+  return r;
+}
+
+TEST(EngineSample, HelpPrintsUsageAndWritesNothing) {
+  for (const char* flag : {"--help", "-h"}) {
+    const EngineRun r = runEngineIn("engine-help", flag);
+    EXPECT_EQ(r.code, 0) << flag << r.err;
+    EXPECT_NE(r.out.find("usage: shadowc_engine_sample OUT_DIR [SCENE] [SCREEN] [MAP]"), std::string::npos) << r.out;
+    EXPECT_EQ(r.entries, 0u) << flag << " wrote into the working folder";
+  }
+}
+
+TEST(EngineSample, UnknownOptionIsAnErrorAndWritesNothing) {
+  const EngineRun r = runEngineIn("engine-bad-option", "--out x");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("error: unknown option '--out'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.entries, 0u);
+}
+
+TEST(EngineSample, BadScreenIsAnErrorNamingIt) {
+  const EngineRun r = runEngineIn("engine-bad-screen", "out two_planes big");
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("SCREEN must be a whole number in [1, 65536], got 'big'"), std::string::npos) << r.err;
+  EXPECT_EQ(r.entries, 0u);
 }
 
 }  // namespace

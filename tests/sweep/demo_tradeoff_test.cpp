@@ -38,14 +38,14 @@ double validateRmse(const std::string& out) {
 
 TEST(DemoTradeoff, RowsAgreeWithValidate) {
   const auto dir = test::freshTempDir("demo-tradeoff");
-  const test::CliResult demo = test::runShadowc("demo --size 48 --out " + dir.string());
+  const test::CliResult demo = test::runShadowc("demo --screen 48 --out " + dir.string());
   ASSERT_EQ(demo.code, 0) << demo.out << demo.err;
   const std::vector<TableRow> rows = tradeoffRows(demo.out);
   ASSERT_EQ(rows.size(), 4u) << demo.out;
   EXPECT_NE(demo.out.find("shadowc sweep samples/sweeps/default.json"), std::string::npos);
   const test::CliResult v =
       test::runShadowc("validate " + (test::sourceDir() / "samples/filters/pcss_poisson.shadow").string() +
-                       " --scene two_planes --size 48 --map 1024 --samples 16 --runs 1 --warmup 0");
+                       " --scene two_planes --screen 48 --map 1024 --samples 16 --runs 1 --warmup 0");
   ASSERT_EQ(v.code, 0) << v.err;
   bool found = false;
   for (const TableRow& r : rows)
