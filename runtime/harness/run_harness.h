@@ -34,6 +34,7 @@ struct RunInputs {
 struct RunOptions {
   int warmup = 0;                      // untimed runs first (lavapipe JIT-compiles on the first dispatch)
   int runs = 0;                        // timed runs; 0 = one untimed run, no timing
+  ClockChoice clock = ClockChoice::Auto;  // Auto: the host clock on a CPU device (run_timing.h)
   std::vector<std::string> downloads;  // intermediate images to read back (level 0, layer 0)
 };
 
@@ -56,7 +57,8 @@ struct TimedRun {
   const CompiledPasses* passes = nullptr;
   const RunInputs* inputs = nullptr;
 };
+// A rejected reading is tried again within its round (PassExecutor::time) and counted.
 std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup,
-                                          int rounds);
+                                          int rounds, ClockChoice clock = ClockChoice::Auto);
 
 }  // namespace shadowc::rt
