@@ -3,11 +3,13 @@
 // through the run harness, and writes results.csv/.json, plots and report.html; prints the
 // Pareto frontier per case. `shadowc sweep merge DIR... -o OUT` joins shard outputs.
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <cstdio>
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -47,6 +49,14 @@ int finish(const sweep::Results& r, const std::filesystem::path& dir) {
   std::fflush(stderr);
   fmt::print("{}", sweep::formatFrontierTables(r));
   fmt::print("{}", sweep::formatShaderRatios(r));
+  std::set<std::string> clocks;
+  int rejected = 0;
+  for (const sweep::Row& row : r.rows) {
+    clocks.insert(row.clock);
+    rejected += row.rejectedRuns;
+  }
+  if (!r.rows.empty())
+    fmt::print("sweep: timed on {}, {} run(s) rejected as implausible\n", fmt::join(clocks, " and "), rejected);
   fmt::print("sweep: {} rows ({} ran, {} cached), {} skipped -> {}/results.csv, results.json, report.html{}\n",
              r.rows.size(), r.stats.ran, r.stats.cached, r.skipped.size(), dir.string(),
              warning.empty() ? ", plots/" : "");

@@ -159,7 +159,7 @@ int runValidation(const ValidationOptions& o) {
   fmt::print("scene    {}  screen {}x{}  map {}^2  reference {}x{} samples{}\n", scene.name, o.size, o.size, o.map,
              o.samples, o.samples, prepared->referenceFromCache ? " (cached)" : "");
   fmt::print("device   {}\n", ctx.describe());
-  fmt::print("timing   median of {} runs after {} warm-up, GPU timestamps\n", timing.runs, timing.warmup);
+  fmt::print("timing   median of {} runs after {} warm-up, {}\n", timing.runs, timing.warmup, rt::clockSummary(timing));
   for (const auto& p : timing.passes) fmt::print("  {:<16} {:<10} {:9.3f} ms\n", p.name, p.kind, p.medianMs);
   fmt::print("  {:<16} {:<10} {:9.3f} ms\n", "total", "", timing.totalMs);
   if (!measured.outputs.forms.empty()) fmt::print("  {}\n", rt::describeChoices(measured.outputs.forms));
@@ -189,10 +189,13 @@ int runValidation(const ValidationOptions& o) {
     nlohmann::ordered_json t;
     t["warmup"] = timing.warmup;
     t["runs"] = timing.runs;
+    t["clock"] = rt::toString(timing.clock);
+    t["rejected_runs"] = timing.rejected.size();
     auto& passes = t["passes"] = nlohmann::ordered_json::array();
     for (const auto& p : timing.passes)
       passes.push_back({{"name", p.name}, {"kind", p.kind}, {"median_ms", p.medianMs}, {"min_ms", p.minMs}});
     t["total_ms"] = timing.totalMs;
+    t["host_total_ms"] = rt::median(timing.runHostMs);
     if (!measured.outputs.forms.empty()) {
       auto& forms = t["pass_forms"] = nlohmann::ordered_json::array();
       for (const auto& f : measured.outputs.forms)

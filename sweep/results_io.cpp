@@ -70,6 +70,8 @@ ordered_json rowToJson(const Row& r) {
   j["warmup"] = r.warmup;
   j["content_hash"] = r.contentHash;
   j["total_ms"] = r.totalMs;
+  j["clock"] = r.clock;
+  j["rejected_runs"] = r.rejectedRuns;
   ordered_json passes = ordered_json::array();
   for (const auto& p : r.passes) passes.push_back({{"name", p.name}, {"kind", p.kind}, {"median_ms", p.medianMs}});
   j["passes"] = std::move(passes);
@@ -102,6 +104,9 @@ Row rowFromJson(const json& j) {
     r.warmup = j.at("warmup").get<int>();
     r.contentHash = j.at("content_hash").get<std::string>();
     r.totalMs = j.at("total_ms").get<double>();
+    // Rows written before the host-clock check carry neither: they were timed on device timestamps.
+    r.clock = j.value("clock", std::string("device timestamps"));
+    r.rejectedRuns = j.value("rejected_runs", 0);
     for (const auto& p : j.at("passes"))
       r.passes.push_back(
           {p.at("name").get<std::string>(), p.at("kind").get<std::string>(), p.at("median_ms").get<double>()});
@@ -193,7 +198,7 @@ std::string resultsCsv(const Results& res) {
     for (size_t i : members) onFrontier[i] = true;
   std::string out =
       "case,scene,screen,map,variant,base,shader,params,total_ms,rmse,mae,max_abs_error,p99_abs_error,light_bleeding,"
-      "over_darkening,non_finite,frontier,passes_ms,content_hash,key,spec,specialized_over_generic\n";
+      "over_darkening,non_finite,frontier,passes_ms,content_hash,key,spec,specialized_over_generic,clock,rejected_runs\n";
   const std::vector<ShaderPair> pairs = shaderPairs(res.rows);
   for (size_t i = 0; i < res.rows.size(); ++i) {
     const Row& r = res.rows[i];
@@ -203,11 +208,12 @@ std::string resultsCsv(const Results& res) {
     const rt::Metrics& m = r.metrics;
     const std::optional<double> ratio = pairedRatio(pairs, i);
     out +=
-        fmt::format("{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{},{}\n",
+        fmt::format("{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{},{},{},{}\n",
                     csvField(r.caseLabel), csvField(r.scene), r.screen, r.map, csvField(r.variant), csvField(r.base),
                     r.shader, csvField(params), r.totalMs, m.rmse, m.mae, m.maxAbsError, m.p99AbsError, m.lightBleeding,
                     m.overDarkening, m.nonFinite, onFrontier[i] ? 1 : 0, csvField(passes), r.contentHash, r.key,
-                    csvField(r.spec.dump()), ratio ? fmt::format("{:.4f}", *ratio) : "");
+                    csvField(r.spec.dump()), ratio ? fmt::format("{:.4f}", *ratio) : "", csvField(r.clock),
+                    r.rejectedRuns);
   }
   return out;
 }

@@ -34,6 +34,8 @@ struct Row {
   std::string contentHash;      // manifest content hash of the compiled variant
   std::vector<PassTime> passes;
   double totalMs = 0;
+  std::string clock = "device timestamps";  // rt::toString(TimingClock): what timed the row
+  int rejectedRuns = 0;                     // implausible readings left out (docs/runtime.md "Rejected runs")
   rt::Metrics metrics;
   std::string device;
   std::string resultImage, errorImage, referenceImage;  // relative to the output folder

@@ -237,6 +237,8 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         row.passes.clear();
         for (const auto& p : run.outputs.timing->passes) row.passes.push_back({p.name, p.kind, p.medianMs});
         row.totalMs = run.outputs.timing->totalMs;
+        row.clock = rt::toString(run.outputs.timing->clock);
+        row.rejectedRuns = int(run.outputs.timing->rejected.size());
         row.metrics = run.metrics;
         row.resultImage = fmt::format("images/{}-result.png", job.key);
         row.errorImage = fmt::format("images/{}-error.png", job.key);
@@ -270,7 +272,8 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
       row.referenceImage = refImage;
       writeCachedRow(o.outDir, row);  // atomically, as soon as it is done: resume trusts it
       ++res.stats.ran;
-      progress.step(fmt::format("{} on {}: {:.3f} ms, rmse {:.5f}", v.label, c.label, row.totalMs, row.metrics.rmse));
+      progress.step(fmt::format("{} on {}: {:.3f} ms ({}, {} rejected), rmse {:.5f}", v.label, c.label, row.totalMs,
+                                row.clock, row.rejectedRuns, row.metrics.rmse));
       rows.push_back(std::move(row));
       if (o.stopAfter > 0 && res.stats.ran >= o.stopAfter) {
         progress.finish();

@@ -54,13 +54,6 @@ std::vector<uint32_t> spirvWords(const CompiledPasses& compiled, const Pass& pas
 
 }  // namespace
 
-double median(std::vector<double> v) {
-  if (v.empty()) return 0;
-  std::sort(v.begin(), v.end());
-  const size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
-
 std::array<uint32_t, 3> dispatchGroups(const Pass& pass, uint32_t mapSize, uint32_t screenWidth,
                                        uint32_t screenHeight) {
   const auto [w, h] = extentOf(pass.dispatch.size, mapSize, screenWidth, screenHeight);
@@ -114,14 +107,18 @@ struct PassExecutor::Impl {
   UniqueDescriptorPool pool;
   std::vector<PassResource> passes;
   UniqueQueryPool queries;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;
+  VkCommandBuffer cmd = VK_NULL_HANDLE;  // the whole run, stamped
+  std::vector<VkCommandBuffer> passCmds;  // one pass each, unstamped: the host clock's runs
+  VkCommandBuffer emptyCmd = VK_NULL_HANDLE;  // nothing: one submission's host overhead
+  HostClock hostClock = steadyHostClock();
   std::vector<FormChoice> formChoices;
 
   Impl(VulkanContext& c, const Manifest& m, uint32_t map, uint32_t w, uint32_t h)
       : ctx(c), manifest(m), mapSize(map), width(w), height(h) {}
   ~Impl() {
     if (ctx.device()) vkQueueWaitIdle(ctx.queue());
-    if (cmd) vkFreeCommandBuffers(ctx.device(), ctx.commandPool(), 1, &cmd);
+    for (VkCommandBuffer c : allCommandBuffers())
+      if (c) vkFreeCommandBuffers(ctx.device(), ctx.commandPool(), 1, &c);
   }
 
   ImageResource& image(const std::string& name, const char* what) {
@@ -441,46 +438,70 @@ struct PassExecutor::Impl {
     return r;
   }
 
+  std::vector<VkCommandBuffer> allCommandBuffers() const {
+    std::vector<VkCommandBuffer> all = passCmds;
+    all.push_back(cmd);
+    all.push_back(emptyCmd);
+    return all;
+  }
+
   // One reusable command buffer: a stamp before the first pass and one after each pass's
   // closing barrier; pass i's time is stamp[i+1] - stamp[i]. Each stamp is followed by a
-  // second, throw-away stamp. Why: lavapipe (Mesa 22.3) takes a timestamp's value only when
-  // its command stream is next flushed, and a non-TOP_OF_PIPE vkCmdWriteTimestamp flushes
-  // first; without the extra stamp every value was taken after the *next* dispatch, which
-  // charged each pass's work to its neighbour (measured: moments 0.02 ms, the next pass +7 ms).
-  // On other drivers the extra stamp costs nothing measurable.
+  // second, throw-away stamp: lavapipe (Mesa 22.3) queues a timestamp to its rasterizer threads,
+  // which take its value only after the next flush, and a non-TOP_OF_PIPE vkCmdWriteTimestamp
+  // flushes first. Even so those threads race the compute threads for the cores, so a CPU
+  // device's stamps can be late by a whole pass: it is timed on the host clock instead
+  // (docs/runtime.md "Timing method").
   void stamp(uint32_t point) {
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 2 * point);
     vkCmdWriteTimestamp(cmd, VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, queries, 2 * point + 1);
   }
 
-  void record() {
+  VkCommandBuffer beginCommands() {
     VkCommandBufferAllocateInfo alloc{VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO};
     alloc.commandPool = ctx.commandPool();
     alloc.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
     alloc.commandBufferCount = 1;
-    checkVk(vkAllocateCommandBuffers(ctx.device(), &alloc, &cmd), "vkAllocateCommandBuffers");
+    VkCommandBuffer c = VK_NULL_HANDLE;
+    checkVk(vkAllocateCommandBuffers(ctx.device(), &alloc, &c), "vkAllocateCommandBuffers");
     VkCommandBufferBeginInfo begin{VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO};
-    checkVk(vkBeginCommandBuffer(cmd, &begin), "vkBeginCommandBuffer");
+    checkVk(vkBeginCommandBuffer(c, &begin), "vkBeginCommandBuffer");
+    return c;
+  }
+
+  void recordPass(VkCommandBuffer c, const PassResource& p) {
+    vkCmdBindPipeline(c, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
+    vkCmdBindDescriptorSets(c, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, 0, 1, &p.set, 0, nullptr);
+    if (!p.push.empty())
+      vkCmdPushConstants(c, p.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, uint32_t(p.push.size()), p.push.data());
+    vkCmdDispatch(c, p.groups[0], p.groups[1], p.groups[2]);
+    // The next pass reads (or overwrites) what this one wrote; the stamp waits for it too.
+    VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
+    vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
+                         VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 1, &b, 0,
+                         nullptr, 0, nullptr);
+  }
+
+  void record() {
+    cmd = beginCommands();
     vkCmdResetQueryPool(cmd, queries, 0, queryCount());
     fullBarrier(cmd);  // uploads and the previous run happen before this one
     stamp(0);
     for (size_t i = 0; i < passes.size(); ++i) {
-      const PassResource& p = passes[i];
-      vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.pipeline);
-      vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, p.layout, 0, 1, &p.set, 0, nullptr);
-      if (!p.push.empty())
-        vkCmdPushConstants(cmd, p.layout, VK_SHADER_STAGE_COMPUTE_BIT, 0, uint32_t(p.push.size()), p.push.data());
-      vkCmdDispatch(cmd, p.groups[0], p.groups[1], p.groups[2]);
-      // The next pass reads (or overwrites) what this one wrote; the stamp waits for it too.
-      VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
-      b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
-      b.dstAccessMask = VK_ACCESS_SHADER_READ_BIT | VK_ACCESS_SHADER_WRITE_BIT;
-      vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT,
-                           VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT | VK_PIPELINE_STAGE_BOTTOM_OF_PIPE_BIT, 0, 1, &b, 0,
-                           nullptr, 0, nullptr);
+      recordPass(cmd, passes[i]);
       stamp(uint32_t(i + 1));
     }
     checkVk(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
+    for (const PassResource& p : passes) {
+      passCmds.push_back(beginCommands());
+      fullBarrier(passCmds.back());  // the previous submission's writes
+      recordPass(passCmds.back(), p);
+      checkVk(vkEndCommandBuffer(passCmds.back()), "vkEndCommandBuffer");
+    }
+    emptyCmd = beginCommands();
+    checkVk(vkEndCommandBuffer(emptyCmd), "vkEndCommandBuffer");
   }
 
   uint32_t queryCount() const { return 2 * (uint32_t(manifest.passes.size()) + 1); }
@@ -549,35 +570,61 @@ void PassExecutor::upload(const std::string& name, const HostImage& data) {
 
 void PassExecutor::run() { impl_->ctx.submitAndWait(impl_->cmd); }
 
-TimingResult PassExecutor::time(int warmup, int runs) {
-  TimingResult result;
-  result.warmup = std::max(0, warmup);
-  result.runs = std::max(1, runs);
-  for (int i = 0; i < result.warmup; ++i) run();
-  const size_t n = impl_->passes.size();
-  std::vector<std::vector<double>> perPass(n);
-  std::vector<double> totals;
-  const double period = impl_->ctx.properties().limits.timestampPeriod;  // ns per tick
-  std::vector<uint64_t> ticks(2 * (n + 1));
-  for (int r = 0; r < result.runs; ++r) {
-    run();
-    if (n == 0) continue;
-    checkVk(vkGetQueryPoolResults(impl_->ctx.device(), impl_->queries, 0, uint32_t(ticks.size()),
-                                  ticks.size() * sizeof(uint64_t), ticks.data(), sizeof(uint64_t),
-                                  VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
+namespace {
+
+// The executor's runs as the timing loop sees them (run_timing.h).
+class ExecutorRuns final : public TimedDevice {
+ public:
+  ExecutorRuns(VulkanContext& ctx, VkQueryPool queries, VkCommandBuffer run, const std::vector<VkCommandBuffer>& passes,
+               VkCommandBuffer empty)
+      : ctx_(ctx), queries_(queries), run_(run), passes_(passes), empty_(empty) {}
+  size_t passCount() const override { return passes_.size(); }
+  void submitRun() override { ctx_.submitAndWait(run_); }
+  void submitPass(size_t pass) override { ctx_.submitAndWait(passes_.at(pass)); }
+  void submitEmpty() override { ctx_.submitAndWait(empty_); }
+  double timestampTickMs() const override { return ctx_.properties().limits.timestampPeriod * 1e-6; }
+  RunReading readTimestamps() override {
+    const size_t n = passes_.size();
+    std::vector<uint64_t> ticks(2 * (n + 1));
+    checkVk(vkGetQueryPoolResults(ctx_.device(), queries_, 0, uint32_t(ticks.size()), ticks.size() * sizeof(uint64_t),
+                                  ticks.data(), sizeof(uint64_t), VK_QUERY_RESULT_64_BIT | VK_QUERY_RESULT_WAIT_BIT),
             "vkGetQueryPoolResults");
-    for (size_t i = 0; i < n; ++i) perPass[i].push_back(double(ticks[2 * (i + 1)] - ticks[2 * i]) * period * 1e-6);
-    totals.push_back(double(ticks[2 * n] - ticks[0]) * period * 1e-6);
+    // Signed: a stamp taken out of order is a negative time, which the check rejects.
+    const auto ms = [&](size_t a, size_t b) { return double(int64_t(ticks[b] - ticks[a])) * timestampTickMs(); };
+    RunReading r;
+    for (size_t i = 0; i < n; ++i) r.passMs.push_back(ms(2 * i, 2 * (i + 1)));
+    r.totalMs = ms(0, 2 * n);
+    return r;
   }
-  for (size_t i = 0; i < n; ++i) {
-    const Pass& p = impl_->manifest.passes[i];
-    result.passes.push_back(
-        {p.name, p.kind, median(perPass[i]), *std::min_element(perPass[i].begin(), perPass[i].end())});
+
+ private:
+  VulkanContext& ctx_;
+  VkQueryPool queries_;
+  VkCommandBuffer run_;
+  const std::vector<VkCommandBuffer>& passes_;
+  VkCommandBuffer empty_;
+};
+
+}  // namespace
+
+TimingResult PassExecutor::time(int warmup, int runs, ClockChoice choice) {
+  const bool cpu = impl_->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
+  ExecutorRuns device(impl_->ctx, impl_->queries, impl_->cmd, impl_->passCmds, impl_->emptyCmd);
+  std::vector<std::string> names, kinds;
+  for (const Pass& p : impl_->manifest.passes) {
+    names.push_back(p.name);
+    kinds.push_back(p.kind);
   }
-  result.totalMs = median(totals);
-  result.runTotalsMs = std::move(totals);
-  return result;
+  try {
+    return timeRuns(device, resolveClock(choice, cpu), impl_->hostClock, warmup, runs, names, kinds);
+  } catch (const VulkanError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw ExecutorError(e.what());
+  }
 }
+
+void PassExecutor::setHostClock(HostClock clock) { impl_->hostClock = std::move(clock); }
 
 HostImage PassExecutor::download(const std::string& name, uint32_t level, uint32_t layer) {
   auto& im = impl_->image(name, "download");

@@ -15,6 +15,7 @@
 #include "manifest/manifest.h"
 #include "runtime/executor/host_image.h"
 #include "runtime/executor/pass_forms.h"
+#include "runtime/executor/run_timing.h"  // TimingResult, median, the clocks
 
 namespace shadowc::rt {
 
@@ -25,24 +26,6 @@ class VulkanContext;
 struct ExecutorError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
-
-struct PassTiming {
-  std::string name;
-  std::string kind;
-  double medianMs = 0;
-  double minMs = 0;
-};
-
-struct TimingResult {
-  std::vector<PassTiming> passes;   // manifest order
-  double totalMs = 0;               // median over runs of (stamp after the last pass - stamp before the first)
-  std::vector<double> runTotalsMs;  // each timed run's total, in run order (interleaved ratios pair them)
-  int warmup = 0, runs = 0;
-};
-
-// The timings' median: the middle value, or the mean of the middle two; 0 when empty. The
-// benchmarks use this one too.
-double median(std::vector<double> v);
 
 // Workgroup counts for a pass: Texels -> ceil(w/lx) x ceil(h/ly); Rows -> one invocation per
 // row along x (gl_GlobalInvocationID.x = row), ceil(h/lx) groups; Columns -> one per column,
@@ -70,8 +53,12 @@ class PassExecutor {
   // Level 0, all layers; size, layers and format must match the manifest image.
   void upload(const std::string& image, const HostImage& data);
   void run();  // one execution of every pass, waits for completion
-  // `warmup` untimed runs (lavapipe JIT-compiles on the first dispatch), then `runs` timed runs.
-  TimingResult time(int warmup, int runs);
+  // `warmup` untimed runs (lavapipe JIT-compiles on the first dispatch), then `runs` timed runs on
+  // the chosen clock (Auto: the host clock on a CPU device), every reading checked against the
+  // host's clock (run_timing.h). An ExecutorError when every run was rejected.
+  TimingResult time(int warmup, int runs, ClockChoice clock = ClockChoice::Auto);
+  // The host clock timed runs read (default steadyHostClock()).
+  void setHostClock(HostClock clock);
   HostImage download(const std::string& image, uint32_t level = 0, uint32_t layer = 0);
 
   const Manifest& manifest() const;  // as run: each pass in its chosen form

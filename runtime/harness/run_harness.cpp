@@ -56,7 +56,7 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
 
   // The last run leaves the outputs in place for the downloads.
   if (options.runs > 0) {
-    out.timing = ex.time(options.warmup, options.runs);
+    out.timing = ex.time(options.warmup, options.runs, options.clock);
   } else {
     for (int i = 0; i <= options.warmup; ++i) ex.run();
   }
@@ -66,7 +66,7 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
 }
 
 std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup,
-                                          int rounds) {
+                                          int rounds, ClockChoice clock) {
   if (warmup < 0 || rounds < 1) throw ExecutorError("interleaved timing needs warm-up >= 0 and rounds >= 1");
   std::vector<std::unique_ptr<PassExecutor>> ex;
   for (const TimedRun& r : runs) {
@@ -82,14 +82,22 @@ std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<
   for (int round = 0; round < rounds; ++round)
     for (size_t k = 0; k < ex.size(); ++k) {
       const size_t i = round % 2 ? ex.size() - 1 - k : k;
-      perRun[i].push_back(ex[i]->time(0, 1));
+      perRun[i].push_back(ex[i]->time(0, 1, clock));
     }
   std::vector<TimingResult> out(ex.size());
   for (size_t i = 0; i < ex.size(); ++i) {
     TimingResult& t = out[i];
     t.warmup = warmup;
     t.runs = rounds;
-    for (const TimingResult& one : perRun[i]) t.runTotalsMs.push_back(one.totalMs);
+    t.clock = perRun[i].front().clock;
+    for (const TimingResult& one : perRun[i]) {
+      t.runTotalsMs.push_back(one.totalMs);
+      if (!one.runHostMs.empty()) t.runHostMs.push_back(one.runHostMs.front());
+      t.rejected.insert(t.rejected.end(), one.rejected.begin(), one.rejected.end());
+    }
+    std::vector<double> overheads;
+    for (const TimingResult& one : perRun[i]) overheads.push_back(one.submitOverheadMs);
+    t.submitOverheadMs = median(overheads);
     t.totalMs = median(t.runTotalsMs);
     for (size_t p = 0; p < perRun[i].front().passes.size(); ++p) {
       std::vector<double> ms;

@@ -1,0 +1,149 @@
+#include "runtime/executor/run_timing.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace shadowc::rt {
+
+std::string_view toString(TimingClock clock) {
+  return clock == TimingClock::Host ? "host clock" : "device timestamps";
+}
+
+TimingClock resolveClock(ClockChoice choice, bool cpuDevice) {
+  switch (choice) {
+    case ClockChoice::Device:
+      return TimingClock::Device;
+    case ClockChoice::Host:
+      return TimingClock::Host;
+    case ClockChoice::Auto:
+      break;
+  }
+  return cpuDevice ? TimingClock::Host : TimingClock::Device;
+}
+
+HostClock steadyHostClock() {
+  return [] {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+  };
+}
+
+std::string_view toString(Verdict verdict) {
+  switch (verdict) {
+    case Verdict::Plausible:
+      return "plausible";
+    case Verdict::TooShort:
+      return "shorter than half the host's time";
+    case Verdict::TooLong:
+      return "longer than the host's time";
+    case Verdict::NotADuration:
+      return "not a duration";
+  }
+  return "?";
+}
+
+Verdict judge(const RunReading& r, TimingClock clock, const Plausibility& b) {
+  const auto duration = [](double ms) { return std::isfinite(ms) && ms >= 0; };
+  if (!duration(r.totalMs) || !duration(r.hostMs) || !std::all_of(r.passMs.begin(), r.passMs.end(), duration))
+    return Verdict::NotADuration;
+  if (clock == TimingClock::Host)  // the passes are sub-intervals of the run, on the same clock
+    return r.totalMs <= r.hostMs ? Verdict::Plausible : Verdict::TooLong;
+  if (r.totalMs > 1.01 * r.hostMs + 2 * b.tickMs) return Verdict::TooLong;
+  if (r.totalMs < 0.5 * (r.hostMs - b.submitOverheadMs)) return Verdict::TooShort;
+  return Verdict::Plausible;
+}
+
+double median(std::vector<double> v) {
+  if (v.empty()) return 0;
+  std::sort(v.begin(), v.end());
+  const size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+RunReading measureRun(TimedDevice& device, TimingClock clock, const HostClock& now) {
+  if (clock == TimingClock::Device) {
+    const double start = now();
+    device.submitRun();
+    const double end = now();
+    RunReading r = device.readTimestamps();
+    r.hostMs = end - start;
+    return r;
+  }
+  // One submission per pass: each pass's time is its own submit-to-fence, so it includes one
+  // submission's overhead (TimingResult::submitOverheadMs says how much).
+  RunReading r;
+  const double start = now();
+  for (size_t i = 0; i < device.passCount(); ++i) {
+    const double before = now();
+    device.submitPass(i);
+    r.passMs.push_back(now() - before);
+    r.totalMs += r.passMs.back();
+  }
+  r.hostMs = now() - start;
+  return r;
+}
+
+namespace {
+
+double submitOverhead(TimedDevice& device, const HostClock& now) {
+  std::vector<double> ms;
+  for (int i = 0; i < 5; ++i) {
+    const double start = now();
+    device.submitEmpty();
+    ms.push_back(now() - start);
+  }
+  return median(ms);
+}
+
+}  // namespace
+
+TimingResult timeRuns(TimedDevice& device, TimingClock clock, const HostClock& now, int warmup, int runs,
+                      const std::vector<std::string>& names, const std::vector<std::string>& kinds) {
+  TimingResult result;
+  result.clock = clock;
+  result.warmup = std::max(0, warmup);
+  const int wanted = std::max(1, runs);
+  for (int i = 0; i < result.warmup; ++i) device.submitRun();
+  const size_t n = device.passCount();
+  if (n == 0) {  // nothing to time: the runs still happen, no reading exists
+    for (int i = 0; i < wanted; ++i) device.submitRun();
+    result.runs = wanted;
+    return result;
+  }
+  result.submitOverheadMs = submitOverhead(device, now);
+  const Plausibility bounds{result.submitOverheadMs, device.timestampTickMs()};
+  std::vector<std::vector<double>> perPass(n);
+  for (int attempt = 0; attempt < 2 * wanted + 2 && result.runs < wanted; ++attempt) {
+    const RunReading r = measureRun(device, clock, now);
+    const Verdict verdict = judge(r, clock, bounds);
+    if (verdict != Verdict::Plausible) {
+      result.rejected.push_back({r.totalMs, r.hostMs, verdict});
+      continue;
+    }
+    for (size_t i = 0; i < n; ++i) perPass[i].push_back(r.passMs.at(i));
+    result.runTotalsMs.push_back(r.totalMs);
+    result.runHostMs.push_back(r.hostMs);
+    ++result.runs;
+  }
+  if (result.runs == 0) {
+    const RejectedRun& last = result.rejected.back();
+    throw std::runtime_error(
+        fmt::format("every one of {} timed runs was rejected: the last measured {:.3f} ms on the {} against {:.3f} ms "
+                    "on the host clock ({})",
+                    result.rejected.size(), last.totalMs, toString(clock), last.hostMs, toString(last.verdict)));
+  }
+  for (size_t i = 0; i < n; ++i)
+    result.passes.push_back({i < names.size() ? names[i] : "", i < kinds.size() ? kinds[i] : "", median(perPass[i]),
+                             *std::min_element(perPass[i].begin(), perPass[i].end())});
+  result.totalMs = median(result.runTotalsMs);
+  return result;
+}
+
+std::string clockSummary(const TimingResult& timing) {
+  return fmt::format("{}, {} rejected", toString(timing.clock), timing.rejected.size());
+}
+
+}  // namespace shadowc::rt
