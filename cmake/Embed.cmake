@@ -1,8 +1,8 @@
 # shadowc_embed(TARGET NAMESPACE BASE_DIR FILES...): compiles text files into a static library
 # exposing   std::string_view <NAMESPACE>::find(std::string_view relativePath)   and
 #            std::span<const shadowc::EmbeddedFile> <NAMESPACE>::all()
-# so that templates stay real .glsl files in the tree (STYLE.md: Filament's matc embeds its
-# shader sources the same way) and the binary needs no files at run time.
+# so that templates stay real .glsl files in the tree (Filament's matc embeds its shader
+# sources the same way) and the binary needs no files at run time.
 function(shadowc_embed target ns base_dir)
   set(out_cpp ${CMAKE_CURRENT_BINARY_DIR}/${target}_embedded.cpp)
   set(inputs ${ARGN})

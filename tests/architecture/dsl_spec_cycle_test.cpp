@@ -1,4 +1,4 @@
-// The front end's layering (issue 8): spec/ builds on dsl/, never the other way round, so no
+// The front end's layering: spec/ builds on dsl/, never the other way round, so no
 // file under compiler/dsl includes a header of compiler/spec. The scanner reads the #include
 // lines of the sources; its sibling proves it finds a planted include (and skips comments).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// The pipeline's layering (DESIGN.md "The pipeline", issue 8): data flows load -> check ->
+// The pipeline's layering: data flows load -> check ->
 // plan -> emit -> backend, and only compiler/driver/ wires plan and emit together. These tests
 // scan the sources' #include lines and the planner's string literals so that it stays so; each
 // rule has a sibling that plants a violation and proves the scanner reports it.

@@ -1,5 +1,5 @@
 // `shadowc validate` with bad input: each case gives ONE clear message on stderr and a non-zero
-// exit (issue 4). The sibling runs a good invocation to prove that the harness sees success, so
+// exit. The sibling runs a good invocation to prove that the harness sees success, so
 // the failures above are the inputs' doing, not a broken test set-up.
 #include <gtest/gtest.h>
 
@@ -95,7 +95,7 @@ TEST(ValidateErrors, SiblingACompiledManifestRunsToo) {
   EXPECT_NE(r.out.find("filter   pcf_grid5x5"), std::string::npos) << r.out;
 }
 
-// Light types (issue 14): a spot filter on a sun scene is one clear error naming the fix, and the
+// Light types: a spot filter on a sun scene is one clear error naming the fix, and the
 // same filter compiled for a sun validates on it (the sibling).
 // `validate FILE --scene SCENE` succeeds: exit 0, an RMSE printed, no error line.
 void expectValidates(const std::filesystem::path& file, const std::string& scene) {
@@ -121,7 +121,7 @@ TEST(ValidateErrors, SiblingASunFilterValidatesOnASunScene) {
   expectValidates(file, "sun_two_planes");
 }
 
-// Point lights (issue 14 item 4): a spot filter on point_room is one error naming the fix; a
+// Point lights: a spot filter on point_room is one error naming the fix; a
 // point filter on a spot scene too; the point filter validates on point_room (the sibling).
 TEST(ValidateErrors, SpotFilterOnPointScene) {
   expectOneError(test::runShadowc("validate " + kFilter + " --scene point_room" + kSmall),

@@ -1,7 +1,7 @@
-// Issue 9's accuracy bounds at its settings (256^2 screen, 1024^2 map, 16x16 reference samples,
+// The VSSM accuracy targets at their settings (256^2 screen, 1024^2 map, 16x16 reference samples,
 // cached in the build dir), and the two changes that brought most of them within reach, each with
 // a sibling that breaks the same check on the same scene (numbers measured with `shadowc sweep`
-// at these settings, docs/accuracy.md "Session 5" and "Issue 9 targets").
+// at these settings, docs/accuracy.md "VSSM targets").
 #include <gtest/gtest.h>
 
 #include <regex>
@@ -42,8 +42,8 @@ TEST_F(Issue9TargetsTest, SatKernelsReachTheWholeMap) {
   EXPECT_GT(run("vssm_quadtree_table_max64", capped, "large_penumbra").rmse, 0.15);
 }
 
-// The VSSM sample with PCF fallback that meets issue 9's bounds on the five scenes where the
-// single-map model can (docs/accuracy.md "Issue 9 targets"; the others are shown there with their
+// The VSSM sample with PCF fallback that meets the targets' bounds on the five scenes where the
+// single-map model can (docs/accuracy.md "VSSM targets"; the others are shown there with their
 // error images and causes). Its folded light size becomes the scene's, as the report runs it.
 // Measured 0.0034 / 0.0097 / 0.0286 / 0.0491 / 0.0442.
 TEST_F(Issue9TargetsTest, UniformKernelSampleMeetsTheReachableBounds) {

@@ -1,6 +1,6 @@
-// Acne on the real-mesh scenes at issue 9's settings (256^2 screen, 1024^2 map, 16x16 reference
+// Acne on the real-mesh scenes at the accuracy settings (256^2 screen, 1024^2 map, 16x16 reference
 // samples, cached in the build dir): acne = `over_darkening`, the fraction of the pixels whose
-// reference is > 0.95 that the filter darkens below 0.8; issue 9's bound is 0.005. Each check has
+// reference is > 0.95 that the filter darkens below 0.8; the bound is 0.005. Each check has
 // a sibling that breaks the same bound on the same scene (numbers measured with `shadowc validate`
 // at the same settings; docs/accuracy.md "Bias").
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// A point light's cube shadow map on the point_room scene (issue 14 item 4): PCF, PCSS and a VSM
+// A point light's cube shadow map on the point_room scene: PCF, PCSS and a VSM
 // sample compiled with `light point(radius: scene)` against the Embree reference (the sphere's
 // cone of directions, docs/scenes.md), within bounds measured first (docs/accuracy.md "Point
 // lights"), and the seams: the error on pixels whose light direction lies near a cube-face

@@ -1,4 +1,4 @@
-// `analyze` and `plan` for every light type (issue 14, issue 12): a point light's scene analysed
+// `analyze` and `plan` for every light type: a point light's scene analysed
 // per cube face (each receiver in the face frame_cube.glsl picks, its texels the face's atlas
 // cell) and planned to a `light point(radius: scene)` filter the checker accepts; a sun scene whose
 // receivers span a wide camera-depth range offered cascaded candidates. Small screens and maps,

@@ -210,7 +210,7 @@ TEST(Plan, RaisingTheLightSizeChangesThePlan) {
 // PCSS's taps cannot follow its penumbrae, so the plan is a VSSM variant (where a contact path
 // and a fallback could exist).
 // Bound: a little above the best reachable RMSE there (0.066 at these settings, measured against
-// the shadowing-term reference of issue 9).
+// the shadowing-term reference, docs/scenes.md "Ground truth").
 TEST(Plan, NoContactNoLayersNoFallbackOnOneFlatOccluder) {
   const planning::PlanResult p = planFor({"large_penumbra"}, 0.075);
   EXPECT_FALSE(p.chosen.contact);

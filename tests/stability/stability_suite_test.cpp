@@ -78,7 +78,7 @@ TEST_F(StabilityNaiveTest, PlainFp32SatFailsWhereInt32Passes) {
   EXPECT_TRUE(int32Seen);
 }
 
-// Issue 9 defect 6: whole-texel SAT corners hold the visibility constant across a texel and jump
+// Whole-texel SAT corners hold the visibility constant across a texel and jump
 // at its boundary; fractional corners follow the continuous box (each technique's pair).
 TEST_F(StabilityNaiveTest, TexelCornersStepWhereFractionalCornersFollowTheBox) {
   const auto rs = runNamed("sat_fractional_corners");
