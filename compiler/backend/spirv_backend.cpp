@@ -178,6 +178,10 @@ SpirvResult compileHlsl(std::string_view source, ShaderStage stage, const std::s
   int len;
   const char* nm;
   setupShader(shader, source, name, src, len, nm, glslang::EShSourceHlsl);
+  // SPIR-V 1.3: glslang's HLSL front end before 12.1 decorates storage buffers BufferBlock, which
+  // SPIR-V 1.4 and later no longer have (KhronosGroup/glslang PR 3121); 1.3 is what that
+  // decoration is valid in, and Vulkan 1.2 takes it.
+  shader.setEnvTarget(glslang::EShTargetSpv, glslang::EShTargetSpv_1_3);
   shader.setEntryPoint(entry.c_str());
   const auto messages = static_cast<EShMessages>(kMessages | EShMsgReadHlsl);
   Includer includer(IncludeResolver{});

@@ -79,12 +79,16 @@ TEST(Planner, VssmInt32PlansFusedSatMinMaxShadeInOrder) {
   EXPECT_EQ(m34.bindings.at(2).level, 3);
   EXPECT_EQ(m34.dispatch.size.shift, 4);
   EXPECT_EQ(m34.spirv, pass(g, "minmax56").spirv);  // the same shader for every middle pair
-  // Shade binds 6 sat and 7 minmax; with a SAT the moments are never bound.
+  // Shade binds 6 sat, 7 minmax and 10 the quadtree's Next/Child tables (traversal: table); with
+  // a SAT the moments are never bound.
   const Pass& s = pass(g, "shade");
-  ASSERT_EQ(s.bindings.size(), 7u);
+  ASSERT_EQ(s.bindings.size(), 8u);
   EXPECT_EQ(s.bindings[5].image, "sat");
   EXPECT_EQ(s.bindings[5].binding, 6u);
   EXPECT_EQ(s.bindings[6].image, "minmax");
+  EXPECT_EQ(s.bindings[7].image, "quadtree_table");
+  EXPECT_EQ(s.bindings[7].binding, 10u);
+  EXPECT_EQ(s.bindings[7].access, Access::StorageBufferRead);
 }
 
 // A pyramid of an odd level count ends with a single-level dispatch; of two levels, one
@@ -172,6 +176,7 @@ TEST(Planner, UnormStorageUsesUnormFormats) {
   EXPECT_EQ(image(planPasses(spec), "moments")->format, ImageFormat::RG16Unorm);
 }
 
+// Every binding names an image, or (a storage buffer) one of the manifest's buffers.
 TEST(Planner, EveryPassSourceIsAnEmbeddedTemplateAndEveryBindingAnImage) {
   for (const FilterSpec& spec :
        {test::pcfSpec(), test::vssmInt32Spec(), test::layeredEvsmSpec(), test::blurMipSpec()}) {
@@ -181,6 +186,12 @@ TEST(Planner, EveryPassSourceIsAnEmbeddedTemplateAndEveryBindingAnImage) {
     for (const auto& p : g.manifest.passes)
       for (const auto& b : p.bindings) {
         if (b.access == Access::Uniform) continue;
+        if (b.access == Access::StorageBufferRead) {
+          const auto& bufs = g.manifest.buffers;
+          EXPECT_TRUE(std::any_of(bufs.begin(), bufs.end(), [&](const auto& d) { return d.name == b.image; }))
+              << p.name << " binds buffer " << b.image;
+          continue;
+        }
         EXPECT_NE(image(g, b.image), nullptr) << p.name << " binds " << b.image;
       }
   }

@@ -3,21 +3,7 @@
 #line 1 "passes/sat_common.glsl"
 #line 27
 uvec4 shadowc_satEncode(vec4 v){ return uvec4(roundEven(clamp(v, 0.0, 1.0)* 65536.0));}
-#line 77
-void shadowc_satCarry(int chunk, uvec4 total, inout uvec4 tileCarry,
-                      inout uvec4 groupCarry, inout uvec4 chunkCarry){
-  precise uvec4 c = chunkCarry + total;
-  chunkCarry = c;
-  if((chunk + 1)% 16 != 0)return;
-  precise uvec4 g = groupCarry + chunkCarry;
-  groupCarry = g;
-  chunkCarry = uvec4(0);
-  if((chunk + 1)% 256 != 0)return;
-  precise uvec4 t = tileCarry + groupCarry;
-  tileCarry = t;
-  groupCarry = uvec4(0);
-}
-#line 28 "templates/passes/sat_rows.comp"
+#line 29 "templates/passes/sat_rows.comp"
 
 layout(local_size_x = 64, local_size_y = 1, local_size_z = 1)in;
 
@@ -39,55 +25,35 @@ vec4 shadowc_layerMoments(float d, int layer){
   return shadowc_warpMoments(d);
 #line 38
 }
-#line 36 "templates/passes/sat_rows.comp"
-#line 39
+#line 37 "templates/passes/sat_rows.comp"
+#line 40
 layout(set = 0, binding = 1, rg32ui)writeonly uniform uimage2DArray satOut;
 
 void main(){
 
   const ivec2 size = textureSize(shadowDepth, 0);
-#line 47
+#line 48
   const int y = int(gl_GlobalInvocationID . x);
   if(y >= size . y)return;
 #line 52
-                  uvec4 tileCarry[1], groupCarry[1], chunkCarry[1];
-  for(int layer = 0;layer < 1;++ layer)
-    tileCarry[layer]= groupCarry[layer]= chunkCarry[layer]= uvec4(0);
-  int x = 0, chunk = 0;
-  for(;x + 8 <= size . x;x += 8, ++ chunk){
+                  uvec4 sum[1];
+  for(int layer = 0;layer < 1;++ layer)sum[layer]= uvec4(0);
+  int x = 0;
+  for(;x + 8 <= size . x;x += 8){
     float d[8];
     for(int i = 0;i < 8;++ i)d[i]= texelFetch(shadowDepth, ivec2(x + i, y), 0). r;
-                    uvec4 base[1], local[1];
-    for(int layer = 0;layer < 1;++ layer){
-      precise uvec4 b =(tileCarry[layer]+ groupCarry[layer])+ chunkCarry[layer];
-      base[layer]= b;
-      local[layer]= uvec4(0);
-    }
     for(int i = 0;i < 8;++ i)
       for(int layer = 0;layer < 1;++ layer){
-        precise uvec4 l = local[layer]+ shadowc_satEncode(shadowc_layerMoments(d[i], layer));
-        local[layer]= l;
-        precise uvec4 s = base[layer]+ l;
-        imageStore(satOut, ivec3(x + i, y, layer), s);
+        sum[layer]+= shadowc_satEncode(shadowc_layerMoments(d[i], layer));
+        imageStore(satOut, ivec3(x + i, y, layer), sum[layer]);
       }
-    for(int layer = 0;layer < 1;++ layer)
-      shadowc_satCarry(chunk, local[layer], tileCarry[layer], groupCarry[layer], chunkCarry[layer]);
-  }
-
-                  uvec4 base[1], local[1];
-  for(int layer = 0;layer < 1;++ layer){
-    precise uvec4 b =(tileCarry[layer]+ groupCarry[layer])+ chunkCarry[layer];
-    base[layer]= b;
-    local[layer]= uvec4(0);
   }
   for(;x < size . x;++ x){
     const float d = texelFetch(shadowDepth, ivec2(x, y), 0). r;
     for(int layer = 0;layer < 1;++ layer){
-      precise uvec4 l = local[layer]+ shadowc_satEncode(shadowc_layerMoments(d, layer));
-      local[layer]= l;
-      precise uvec4 s = base[layer]+ l;
-      imageStore(satOut, ivec3(x, y, layer), s);
+      sum[layer]+= shadowc_satEncode(shadowc_layerMoments(d, layer));
+      imageStore(satOut, ivec3(x, y, layer), sum[layer]);
     }
   }
-#line 117
+#line 89
 }

@@ -4,26 +4,12 @@
 #line 1 "passes/sat_common.glsl"
 #line 27
 uvec4 shadowc_satEncode(vec4 v){ return uvec4(roundEven(clamp(v, 0.0, 1.0)* 65536.0));}
-#line 77
-void shadowc_satCarry(int chunk, uvec4 total, inout uvec4 tileCarry,
-                      inout uvec4 groupCarry, inout uvec4 chunkCarry){
-  precise uvec4 c = chunkCarry + total;
-  chunkCarry = c;
-  if((chunk + 1)% 16 != 0)return;
-  precise uvec4 g = groupCarry + chunkCarry;
-  groupCarry = g;
-  chunkCarry = uvec4(0);
-  if((chunk + 1)% 256 != 0)return;
-  precise uvec4 t = tileCarry + groupCarry;
-  tileCarry = t;
-  groupCarry = uvec4(0);
-}
-#line 13 "passes/sat_tiles.glsl"
+#line 14 "passes/sat_tiles.glsl"
 
 shared uvec4 shadowc_satChunks[256];
 shared uvec4 shadowc_satGroups[16];
 shared uvec4 shadowc_satTileTotal;
-#line 21
+#line 22
                 uvec4 shadowc_satTileCarry(uint i, uvec4 total, inout uvec4 tileCarry){
   shadowc_satChunks[i]= total;
   barrier();
