@@ -161,7 +161,7 @@ FilterSpec candidateSpec(const Candidate& c, const DescribeOptions& o) {
   if (depthFamily) {
     s.representation = Representation::Depth;
     if (c.blocker) {
-      // pcss-blog.txt: Poisson blocker search, penumbra estimate, Poisson PCF of that width.
+      // pcss-blog: Poisson blocker search, penumbra estimate, Poisson PCF of that width.
       s.blocker.kind = BlockerKind::Search;
       s.blocker.taps = c.searchTaps;
       s.blocker.pattern = SamplePattern::Poisson;
@@ -191,7 +191,7 @@ FilterSpec candidateSpec(const Candidate& c, const DescribeOptions& o) {
       s.bias.normalOffset = 2;
       s.bias.maxSlope = 50;  // the language's default (docs/dsl.md "bias")
     } else if (o.slopeBias) {
-      s.bias.kind = BiasKind::SlopeScaled;  // max(slope (1 - N.L), constant), pcss-blog.txt
+      s.bias.kind = BiasKind::SlopeScaled;  // max(slope (1 - N.L), constant), pcss-blog
       s.bias.slope = 0.005;
       s.bias.constant = 0.001;
     } else {

@@ -316,7 +316,7 @@ def targets(rows, refs, img_dir):
            "(the densest PCSS the language has: the single-depth-map, average-blocker model that VSSM's eq. 4 and "
            "box filter approximate, with next to no sampling error). Where both miss the bound the cause is that "
            "model, not its sampling: one blocker depth per receiver and a box kernel, exact only for planar "
-           "occluders parallel to light and receiver (vssm-yang2010 sec. 3; pcss-blog.txt); the split below says "
+           "occluders parallel to light and receiver (vssm-yang2010 sec. 3; pcss-blog); the split below says "
            "where the error lies (from the 8-bit result and reference images). Error image of each missed row "
            "below.", "",
            "| scene | bound | best VSSM sample with fallback | its RMSE | met | ref_pcss_dense |",

@@ -6,7 +6,7 @@
 //  * The shadow map is a perspective projection from the light centre:
 //        uv = 0.5 + 0.5 * p.xy / (p.z * tanHalfFov)
 //  * The input depth image stores normalized linear depth d = (z - near) / (far - near).
-//  * Kernel widths below are in uv units of the shadow map (PCSS, pcss-blog.txt; vssm-yang2010
+//  * Kernel widths below are in uv units of the shadow map (PCSS, pcss-blog; vssm-yang2010
 //    sec. 3, L7 and L16): the cone from a receiver to the light, cut by the plane of the
 //    (assumed planar, light-parallel) occluders.
 //  * Everything declared here is prefixed shadowc_ so the lookup fits into an engine's shader.

@@ -1,4 +1,4 @@
-// Deterministic Poisson-disk tap sets for PCF and PCSS blocker search (pcss-blog.txt: Poisson
+// Deterministic Poisson-disk tap sets for PCF and PCSS blocker search (pcss-blog: Poisson
 // taps rotated per world position turn banding into noise).
 #pragma once
 

@@ -20,7 +20,7 @@ namespace {
 
 PointTable poissonTable(std::string name, int count, uint64_t seed) {
   return {std::move(name),
-          fmt::format("{} Poisson-disk taps in the unit disk (best candidate, seed {}; pcss-blog.txt)", count, seed),
+          fmt::format("{} Poisson-disk taps in the unit disk (best candidate, seed {}; pcss-blog)", count, seed),
           poissonDisk(count, seed)};
 }
 
@@ -104,7 +104,7 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
                                    : s.light.shape == LightShape::Point ? 0.0
                                                                         : s.light.size);
 
-  // ---- bias (pcss-blog.txt slope-scaled form) ---------------------------------------------
+  // ---- bias (pcss-blog slope-scaled form) ---------------------------------------------
   defCode("SHADOWC_BIAS_KIND", biasKindCode(s.bias.kind));
   defReal("SHADOWC_BIAS_CONSTANT", s.bias.constant);
   defReal("SHADOWC_BIAS_SLOPE", s.bias.slope);

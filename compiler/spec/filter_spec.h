@@ -117,7 +117,7 @@ struct PrefilterSpec {
 // ---- blocker estimate --------------------------------------------------------------------
 enum class BlockerKind {
   None,     // fixed kernel: no blocker search
-  Search,   // PCSS blocker search (pcss-blog.txt)
+  Search,   // PCSS blocker search (pcss-blog)
   Moments,  // VSSM eq. 4: z_occ = (z_avg - P t) / (1 - P), vssm-yang2010 sec. 4.2
 };
 enum class SamplePattern { Grid, Poisson };
@@ -162,7 +162,7 @@ struct KernelSpec {
 
 // ---- sampling (depth representation) -----------------------------------------------------
 enum class PcfPattern { Grid, Bilinear, Poisson };
-enum class Rotation { None, Stable };  // stable per world position (pcss-blog.txt)
+enum class Rotation { None, Stable };  // stable per world position (pcss-blog)
 struct SamplingSpec {
   PcfPattern pattern = PcfPattern::Grid;
   int gridN = 3;  // Grid/Bilinear: n x n

@@ -33,7 +33,7 @@ void normalize(FilterSpec& spec, const SettingsRead& given) {
   // pyramid keep 64: their levels are sized from `max` and taps spread over it.
   if (!given.kernelMax && moments && spec.storage.sat != SatKind::None) spec.kernel.maxTexels = kMaxKernelTexels;
   // Sampling (depth representation): a fixed kernel of W texels is sampled W x W; a penumbra
-  // kernel with Poisson taps and stable rotation (pcss-blog.txt).
+  // kernel with Poisson taps and stable rotation (pcss-blog).
   if (!given.sampling && !moments) {
     if (spec.kernel.size == KernelSize::Fixed)
       spec.sampling = SamplingSpec{PcfPattern::Grid, spec.kernel.fixedTexels, 16, Rotation::Stable};

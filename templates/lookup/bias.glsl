@@ -1,6 +1,6 @@
 // bias.glsl — receiver depth bias (self-shadowing "acne"). Four policies:
 //  constant:      d - b
-//  slope-scaled:  d - max(a * (1 - N.L), b)      (pcss-blog.txt: bias grows as the surface
+//  slope-scaled:  d - max(a * (1 - N.L), b)      (pcss-blog: bias grows as the surface
 //                                                  turns away from the light)
 //  normal offset: move the receiver along N by SHADOWC_NORMAL_OFFSET shadow-map texels (world
 //                 size of a texel at the receiver: 2 z tanHalfFov / mapSize), then d - b.

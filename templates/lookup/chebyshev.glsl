@@ -1,4 +1,4 @@
-// chebyshev.glsl — the variance shadow map estimate (vssm-yang2010 eq. 1; vsm-tutorial.txt;
+// chebyshev.glsl — the variance shadow map estimate (vssm-yang2010 eq. 1; vsm-tutorial;
 // lauritzen2008 eq. 3): for moments (mu, E[x^2]) of the occluder depths over a kernel and a
 // receiver at t,
 //   p(t) = 1                                 if t <= mu

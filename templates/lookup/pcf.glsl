@@ -1,4 +1,4 @@
-// pcf.glsl — percentage-closer filtering on the depth map (Reeves et al. 1987; pcss-blog.txt).
+// pcf.glsl — percentage-closer filtering on the depth map (Reeves et al. 1987; pcss-blog).
 // The average of depth-test results over a kernel `w` texels wide centred at `c`:
 //  grid:     n x n texelFetch at the centres of an n x n partition of the kernel
 //  bilinear: the same n x n positions, each the bilinear weight of its 4 neighbouring tests

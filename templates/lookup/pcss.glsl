@@ -1,4 +1,4 @@
-// pcss.glsl — percentage-closer soft shadows (Fernando 2005; pcss-blog.txt):
+// pcss.glsl — percentage-closer soft shadows (Fernando 2005; pcss-blog):
 //  1. blocker search: average depth of the texels that occlude the receiver, over the search
 //     region (the light cone cut at the near plane, frame.glsl), with SHADOWC_BLOCKER_TAPS taps
 //     on a grid or a rotated Poisson disk;

@@ -1,4 +1,4 @@
-// power_cdf.glsl — power-CDF shadow maps (power-cdf-shadow-maps.txt sec. 3). From the filtered
+// power_cdf.glsl — power-CDF shadow maps (power-cdf sec. 3). From the filtered
 // (min, max, mean) of the occluder depths the CDF is approximated by F(t) = t^beta with
 //   t = (z - zmin) / (zmax - zmin),  beta = (mean - zmin) / (zmax - mean)        (eq. 3)
 // and the visibility, normalized so that a planar receiver at the mean depth is lit, is

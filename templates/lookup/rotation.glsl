@@ -1,4 +1,4 @@
-// rotation.glsl — per-position rotation of Poisson taps (pcss-blog.txt): rotating the disk
+// rotation.glsl — per-position rotation of Poisson taps (pcss-blog): rotating the disk
 // turns the banding of a fixed tap set into noise; deriving the angle from the quantized
 // world position (not from the pixel or a frame counter) keeps it stable under camera motion
 // and from frame to frame. The blog precomputes a 32^3 texture of angles; a hash of the cell

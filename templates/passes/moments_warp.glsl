@@ -5,7 +5,7 @@
 //   SHADOWC_WARP 1 exp        r    exp(c+ (d - 1))                  ESM; <= 1 so fp16/unorm keep precision
 //   SHADOWC_WARP 2 evsm2      rg   (e+, e+^2), e+ = exp(c+ (d - 1))  lauritzen2008 sec. 3.2 (positive warp)
 //   SHADOWC_WARP 3 evsm4      rgba (e+, e+^2, -e-, e-^2), e- = exp(-c- (d - 1)) >= 1 (negative warp)
-//   SHADOWC_WARP 4 power_cdf  rgb  (min, max, mean) of d; a unused  power-cdf-shadow-maps.txt
+//   SHADOWC_WARP 4 power_cdf  rgb  (min, max, mean) of d; a unused  power-cdf
 //   SHADOWC_WARP 5 msm        rgba (d, d^2, d^3, d^4), quantized for 16-bit storage
 //                                                                 Peters & Klein 2015 (msm_moments.glsl)
 // Layered (SHADOWC_LAYERS > 1): layer i first remaps d linearly into its range

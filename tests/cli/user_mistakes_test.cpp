@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "cli/cli_expect.h"
 #include "runtime/images/png_image.h"
 #include "support/test_support.h"
 
@@ -18,18 +19,8 @@ const std::string kFilter = (test::sourceDir() / "samples/filters/pcf_grid5x5.sh
 const std::string kSmall = " --map 256 --samples 2 --runs 1 --warmup 0 --no-reference-cache";
 const std::string kScreen = " --screen 32";
 
-int errorLines(const std::string& err) {
-  int n = 0;
-  for (size_t at = 0; (at = err.find("error:", at)) != std::string::npos; ++at) ++n;
-  return n;
-}
-
-void expectOneError(const test::CliResult& r, const std::string& phrase) {
-  EXPECT_NE(r.code, 0) << r.out << r.err;
-  EXPECT_EQ(errorLines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(phrase), std::string::npos) << "expected '" << phrase << "' in:\n" << r.err;
-  EXPECT_EQ(r.out.find("rmse"), std::string::npos) << "no report after an error";
-}
+using test::errorLines;
+using test::expectOneError;
 
 void expectReport(const test::CliResult& r) {
   EXPECT_EQ(r.code, 0) << r.err;

@@ -5,6 +5,7 @@
 
 #include <fstream>
 
+#include "cli/cli_expect.h"
 #include "support/test_support.h"
 
 namespace shadowc {
@@ -14,18 +15,8 @@ const std::string kFilter = (test::sourceDir() / "samples/filters/pcf_grid5x5.sh
 // Small, so a run that gets through is quick.
 const std::string kSmall = " --screen 32 --map 256 --samples 2 --runs 1 --warmup 0 --no-reference-cache";
 
-int errorLines(const std::string& err) {
-  int n = 0;
-  for (size_t at = 0; (at = err.find("error:", at)) != std::string::npos; ++at) ++n;
-  return n;
-}
-
-void expectOneError(const test::CliResult& r, const std::string& phrase) {
-  EXPECT_NE(r.code, 0) << r.out << r.err;
-  EXPECT_EQ(errorLines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find(phrase), std::string::npos) << "expected '" << phrase << "' in:\n" << r.err;
-  EXPECT_EQ(r.out.find("rmse"), std::string::npos) << "no report after an error";
-}
+using test::errorLines;
+using test::expectOneError;
 
 std::filesystem::path writeTemp(const std::string& tag, const std::string& name, const std::string& text) {
   const auto path = test::freshTempDir(tag) / name;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "gpu/accuracy_harness.h"
+#include "gpu/gpu_test_util.h"
 #include "gpu/vulkan_fixture.h"
 #include "runtime/reference/cpu_filters.h"
 
@@ -20,22 +21,6 @@ namespace {
 using ClosedFormSatTest = VulkanTest;
 
 constexpr uint32_t kMap = 512;
-
-// Deterministic pseudo-random depths in [0, 1] with a band of cleared texels (1.0) and a band
-// of exact zeros, so the encoder's clamp and rounding at both ends are exercised.
-std::vector<float> craftedDepth(uint32_t n) {
-  std::vector<float> d(size_t(n) * n);
-  uint64_t s = 0x9E3779B97F4A7C15ull;
-  for (uint32_t y = 0; y < n; ++y)
-    for (uint32_t x = 0; x < n; ++x) {
-      s = s * 6364136223846793005ull + 1442695040888963407ull;
-      float v = float(double(s >> 11) / double(1ull << 53));
-      if (y < 3) v = 1.0f;
-      if (x < 2) v = 0.0f;
-      d[size_t(y) * n + x] = v;
-    }
-  return d;
-}
 
 struct SatRun {
   std::vector<float> moments;  // interleaved rg: the fp32 linear warp (d, d*d) the SAT sums

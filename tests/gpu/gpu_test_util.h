@@ -10,12 +10,30 @@
 #include <fstream>
 #include <functional>
 #include <string>
+#include <vector>
 
 #include "backend/spirv_backend.h"
 #include "runtime/executor/host_image.h"
 #include "shadowc_source_dir.h"
 
 namespace shadowc::test {
+
+// Deterministic pseudo-random depths in [0, 1] (a 64-bit LCG from `seed`) with a band of cleared
+// texels (1.0, rows 0-2) and a band of exact zeros (columns 0-1), so an encoder's clamp and
+// rounding at both ends are exercised.
+inline std::vector<float> craftedDepth(uint32_t n, uint64_t seed = 0x9E3779B97F4A7C15ull) {
+  std::vector<float> d(size_t(n) * n);
+  uint64_t s = seed;
+  for (uint32_t y = 0; y < n; ++y)
+    for (uint32_t x = 0; x < n; ++x) {
+      s = s * 6364136223846793005ull + 1442695040888963407ull;
+      float v = float(double(s >> 11) / double(1ull << 53));
+      if (y < 3) v = 1.0f;
+      if (x < 2) v = 0.0f;
+      d[size_t(y) * n + x] = v;
+    }
+  return d;
+}
 
 // Compiles compute GLSL (with templates/frame.glsl includable) to the bytes of a .spv file, for
 // CompiledPasses::files. A compile error fails the test (the executor then sees no module).

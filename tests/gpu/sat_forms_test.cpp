@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "gpu/accuracy_harness.h"
+#include "gpu/gpu_test_util.h"
 #include "gpu/vulkan_fixture.h"
 
 namespace shadowc::test {
@@ -24,20 +25,8 @@ namespace {
 
 using SatFormsTest = VulkanTest;
 
-// Pseudo-random depths in [0, 1] with cleared (1.0) and zero bands, as closed_form_sat_test.cpp.
-std::vector<float> depths(uint32_t n) {
-  std::vector<float> d(size_t(n) * n);
-  uint64_t s = 0x2545F4914F6CDD1Dull;
-  for (uint32_t y = 0; y < n; ++y)
-    for (uint32_t x = 0; x < n; ++x) {
-      s = s * 6364136223846793005ull + 1442695040888963407ull;
-      float v = float(double(s >> 11) / double(1ull << 53));
-      if (y < 3) v = 1.0f;
-      if (x < 2) v = 0.0f;
-      d[size_t(y) * n + x] = v;
-    }
-  return d;
-}
+// Its own depths (gpu_test_util.h craftedDepth), not closed_form_sat_test.cpp's.
+constexpr uint64_t kDepthSeed = 0x2545F4914F6CDD1Dull;
 
 struct FormRun {
   rt::HostImage sat;
@@ -49,7 +38,8 @@ FormRun runForm(rt::VulkanContext& ctx, const CompiledFilter& cf, uint32_t map, 
   options.downloads = {"sat"};
   options.passForm = form;
   rt::RunOutputs out = rt::runPasses(
-      ctx, cf.passes, craftedInputs(map, 8, 8, identityFrame(map, 8, 8, 0.5f), depths(map), craftGBuffer({}, 8, 8)),
+      ctx, cf.passes,
+      craftedInputs(map, 8, 8, identityFrame(map, 8, 8, 0.5f), craftedDepth(map, kDepthSeed), craftGBuffer({}, 8, 8)),
       options);
   return {std::move(out.images.at("sat")), std::move(out.forms)};
 }
@@ -164,7 +154,7 @@ TEST_F(SatFormsTest, Fp32TableIsRunningSumsBitForBit) {
   for (const uint32_t map : {509u, 4096u}) {
     const FormRun serial = runForm(context(), *cf, map, "auto");
     EXPECT_EQ(formsRun(serial), "") << "an fp32 table has one form";
-    EXPECT_EQ(differingFromCpu(serial.sat, cpuTable(centered(depths(map)), map, false)), 0u) << map;
+    EXPECT_EQ(differingFromCpu(serial.sat, cpuTable(centered(craftedDepth(map, kDepthSeed)), map, false)), 0u) << map;
   }
 }
 
@@ -174,7 +164,7 @@ TEST_F(SatFormsTest, Fp32TableDiffersFromTheBlockedOrder) {
   const CompiledFilter* cf = compileFilterCached("vssm_fp32_centered_sat", sampleSource("vssm_fp32_centered_sat"));
   ASSERT_NE(cf, nullptr);
   const uint32_t map = 509;
-  const std::vector<float> blocked = cpuTable(centered(depths(map)), map, true);
+  const std::vector<float> blocked = cpuTable(centered(craftedDepth(map, kDepthSeed)), map, true);
   EXPECT_GT(differingFromCpu(runForm(context(), *cf, map, "auto").sat, blocked), 0u);
 }
 

@@ -240,7 +240,7 @@ void addGeometryCases(std::vector<StabilityCase>& out) {
                            }));
   }
 
-  // Grazing light: N.L -> 0 with a slope-scaled bias (pcss-blog.txt) and normal offset.
+  // Grazing light: N.L -> 0 with a slope-scaled bias (pcss-blog) and normal offset.
   const std::vector<FilterSpec> grazing = {
       libraryFilter("pcf_slope_bias", "depth\nsampling grid(3x3)\nbias slope(0.005, constant: 0.001)"),
       libraryFilter("vsm_slope_bias", "moments linear\nblur box(radius: 1)\nbias slope(0.005, constant: 0.001)"),

@@ -37,7 +37,7 @@ double reduceBleeding(const FilterSpec& s, double p) {
   return a > 0 ? clamp01((p - a) / (1 - a)) : p;
 }
 
-// power-cdf-shadow-maps.txt eq. 3-4 with the exact beta (no clamp): the intent.
+// power-cdf eq. 3-4 with the exact beta (no clamp): the intent.
 double powerCdf(double zmin, double zmax, double mean, double d) {
   if (zmin > zmax) std::swap(zmin, zmax);
   mean = std::clamp(mean, zmin, zmax);

@@ -75,7 +75,7 @@ is used only when 1 - P > 1e-4 (below that the normal group carries no blocker m
 clamped to [0, t], every average divides by an area tested > 0, and non-planar sub-kernels go
 to the subdivision / PCF fallback of sec. 5.1-5.3. The naive row writes eq. 4's raw value.
 
-**Power-CDF degenerate distributions** (power-cdf-shadow-maps.txt sec. 3, eq. 3-4). zmax ==
+**Power-CDF degenerate distributions** (power-cdf sec. 3, eq. 3-4). zmax ==
 zmin makes t = (z - zmin)/(zmax - zmin) 0/0, and beta = (mean - zmin)/(zmax - mean) diverges as
 the mean approaches zmax. Fix: a single depth is a plain depth test; beta is clamped to
 [1e-4, 1e4]; the denominator of eq. 4 is floored at 1e-7 and the result clamped to [0, 1].

@@ -16,7 +16,7 @@ namespace {
 constexpr uint32_t kScreen = 256, kMap = 1024;
 constexpr int kSamples = 16;
 
-using Issue9TargetsTest = VulkanTest;
+using VssmTargetsTest = VulkanTest;
 
 rt::Metrics run(const std::string& label, const std::string& source, const std::string& scene) {
   return runOnBuiltinScene(VulkanTest::context(), label, source, scene, kMap, kScreen, kSamples);
@@ -26,7 +26,7 @@ rt::Metrics run(const std::string& label, const std::string& source, const std::
 // the whole light, so the shadowing term is 0 there; the sample's 2-texel normal offset moves
 // their lookups off the block, where the map sees the lit floor. Measured 0.0127 shadowed,
 // 0.1122 filtered.
-TEST_F(Issue9TargetsTest, TheWholeLightBehindTheTangentPlaneIsShadowed) {
+TEST_F(VssmTargetsTest, TheWholeLightBehindTheTangentPlaneIsShadowed) {
   EXPECT_LE(run("vssm_pcf_fallback", sampleSource("vssm_pcf_fallback"), "small_penumbra").rmse, 0.02);
   const std::string filtered = withSetting(sampleSource("vssm_pcf_fallback"), "backface", "filtered");
   EXPECT_GT(run("vssm_pcf_fallback_filtered", filtered, "small_penumbra").rmse, 0.08);
@@ -35,7 +35,7 @@ TEST_F(Issue9TargetsTest, TheWholeLightBehindTheTangentPlaneIsShadowed) {
 // A SAT kernel's max defaults to the whole map (int32 box sums in pieces of at most 255 texels,
 // sat.glsl): large_penumbra's penumbrae are 100-400 texels wide. Measured 0.0887 with the
 // default, 0.1767 with the former max 64.
-TEST_F(Issue9TargetsTest, SatKernelsReachTheWholeMap) {
+TEST_F(VssmTargetsTest, SatKernelsReachTheWholeMap) {
   EXPECT_LE(run("vssm_quadtree_table", sampleSource("vssm_quadtree_table"), "large_penumbra").rmse, 0.10);
   const std::string capped = withSetting(sampleSource("vssm_quadtree_table"), "kernel",
                                          "quadtree(height: 3, traversal: table, lit_threshold: 0.0001, max: 64)");
@@ -46,7 +46,7 @@ TEST_F(Issue9TargetsTest, SatKernelsReachTheWholeMap) {
 // single-map model can (docs/accuracy.md "VSSM targets"; the others are shown there with their
 // error images and causes). Its folded light size becomes the scene's, as the report runs it.
 // Measured 0.0034 / 0.0097 / 0.0286 / 0.0491 / 0.0442.
-TEST_F(Issue9TargetsTest, UniformKernelSampleMeetsTheReachableBounds) {
+TEST_F(VssmTargetsTest, UniformKernelSampleMeetsTheReachableBounds) {
   const std::string sample = withSetting(sampleSource("vssm_uniform_kernel"), "light", "area(size: scene)");
   EXPECT_LE(run("vssm_uniform_kernel", sample, "two_planes").rmse, 0.03);
   EXPECT_LE(run("vssm_uniform_kernel", sample, "small_penumbra").rmse, 0.03);
@@ -59,7 +59,7 @@ TEST_F(Issue9TargetsTest, UniformKernelSampleMeetsTheReachableBounds) {
 // bound by a wide margin, measured 0.0919 (1.8x the bound; the receiver plane is what brings the
 // spheres' terminators under it). Not n = 8 sub-kernels: that misses by a hair (0.0513; n = 1, 2,
 // 4, 8, 16 measured 0.0457, 0.0471, 0.0491, 0.0513, 0.0522), and a sibling that close proves little.
-TEST_F(Issue9TargetsTest, ConstantBiasMissesTheContactBound) {
+TEST_F(VssmTargetsTest, ConstantBiasMissesTheContactBound) {
   const std::string sample = withSetting(withSetting(sampleSource("vssm_uniform_kernel"), "light", "area(size: scene)"),
                                          "bias", "constant(0.001)");
   EXPECT_GT(run("vssm_uniform_kernel_constant_bias", sample, "contact").rmse, 0.05);
