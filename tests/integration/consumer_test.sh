@@ -25,6 +25,8 @@ install)
   for f in shadowc-config.cmake shadowc-config-version.cmake shadowc-targets.cmake ShadowcFilters.cmake; do
     [[ -f $prefix/lib/cmake/shadowc/$f ]] || fail "$f not installed"
   done
+  [[ -f $prefix/include/shadowc/frame.h ]] || fail "the integration header is not installed"
+  grep -q "shadowc::frame" "$prefix/lib/cmake/shadowc/shadowc-targets.cmake" || fail "no shadowc::frame target"
   ;;
 first_build)
   rm -rf "$proj" "$build"
