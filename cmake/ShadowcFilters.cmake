@@ -15,7 +15,7 @@
 #
 # <tgt> is created (built by ALL) when it does not exist; an existing target (say, the engine's
 # executable) instead depends on a helper target <tgt>_shadowc_filters, so the outputs are there
-# before it builds. The compiler is shadowc::shadowc: the installed one after find_package(shadowc),
+# before it builds; for an INTERFACE library, which never builds, the helper is also built by ALL. The compiler is shadowc::shadowc: the installed one after find_package(shadowc),
 # the in-tree executable after add_subdirectory (the command then rebuilds when shadowc changes).
 #
 # The filter's name (`filter <name> {`) must be the file's stem: the compiler names the depfile
@@ -95,7 +95,14 @@ function(shadowc_add_filters)
   endforeach()
 
   if(TARGET ${arg_TARGET})
-    add_custom_target(${arg_TARGET}_shadowc_filters DEPENDS ${all_outputs})
+    # An INTERFACE library never builds, so a helper that is only its dependency would never run:
+    # there the helper is built by ALL too (and targets linking the library still wait for it).
+    get_target_property(type ${arg_TARGET} TYPE)
+    set(all "")
+    if(type STREQUAL "INTERFACE_LIBRARY")
+      set(all ALL)
+    endif()
+    add_custom_target(${arg_TARGET}_shadowc_filters ${all} DEPENDS ${all_outputs})
     add_dependencies(${arg_TARGET} ${arg_TARGET}_shadowc_filters)
   else()
     add_custom_target(${arg_TARGET} ALL DEPENDS ${all_outputs})

@@ -1,5 +1,5 @@
 // frame.glsl — the per-frame interface between the runtime harness and every shadowc pass.
-// Mirrored byte for byte by runtime/frame_uniforms.h (std140). Conventions:
+// Its block is mirrored byte for byte by include/shadowc/frame.h (std140). Conventions:
 //  * Light view space: origin at the light's centre, +z along the light axis (distance in
 //    front of the light), the area light lies in the plane z = 0 with width `lightWidth`
 //    (rectangle side or disk diameter; 0 = point light).

@@ -1,5 +1,6 @@
-// frame_block.glsl — the ShadowcFrame uniform block the runtime harness fills (std140, mirrored
-// byte for byte by compiler/manifest/frame_uniforms.h) and shadowc_frame() over it (frame.glsl).
+// frame_block.glsl — the ShadowcFrame uniform block the runtime harness fills (std140; its one C++
+// definition is the installed include/shadowc/frame.h, checked member by member against this
+// block by tests/engine/frame_header_test.cpp) and shadowc_frame() over it (frame.glsl).
 // The emitter ships it inside <filter>_lookup.glsl under #ifndef SHADOWC_FRAME_EXTERNAL, placed
 // by `shadowc compile --lookup-set/--lookup-binding-base`.
 #ifndef SHADOWC_FRAME_BLOCK_GLSL
@@ -14,8 +15,8 @@
 
 layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_FRAME, std140) uniform shadowc_FrameBlock {
   mat4 lightView;     // world -> light view
-  vec4 lightParams;   // x tanHalfFov, y near, z far, w lightWidth (world units)
-  vec4 lightShape;    // x 0 rect / 1 disk / 2 point, yzw unused
+  vec4 lightParams;   // x tanHalfFov (sun: halfExtent), y near, z far, w lightWidth (sun: 2 tan(angle/2))
+  vec4 lightShape;    // x 0 rect / 1 disk / 2 point / 3 sun / 4 cube (point light), yzw unused
   vec4 mapInfo;       // x map size (texels), y 1/size, zw unused
   vec4 screenInfo;    // x width, y height, z 1/width, w 1/height
 #ifdef SHADOWC_CASCADES  // a cascaded sun (templates/lookup/cascades.glsl); other filters end above

@@ -64,10 +64,8 @@ void setupCascades(const Scene& scene, const CascadeConfig& c, FrameSetup& f) {
 
   f.cascadeCount = c.count;
   f.cascadeGrid = c.grid;
-  f.frame.cascadeInfo[0] = float(c.count);
-  f.frame.cascadeInfo[1] = float(splits[0]);
   // Camera view looks down -z (lookAtRH): depth = -(row 2 of the view matrix) . (p, 1).
-  for (int k = 0; k < 4; ++k) f.frame.cameraDepth[k] = -f.cameraView[k][2];
+  setCascadeInfo(f.frame, c.count, splits[0], cameraDepthRow(f.cameraView));
   for (int i = 0; i < c.count; ++i) {
     // The slice this cascade covers, widened towards the camera by the band in which the
     // previous cascade blends into it (lookup/cascades.glsl reads this cascade there).
@@ -88,13 +86,8 @@ void setupCascades(const Scene& scene, const CascadeConfig& c, FrameSetup& f) {
     const double texel = 2.0 * h / tile;
     const glm::dvec3 lc = glm::dvec3(f.lightView * glm::vec4(glm::vec3(centre), 1.0f));
     const double cx = std::floor(lc.x / texel) * texel, cy = std::floor(lc.y / texel) * texel;
-    // The atlas frame of frame_cascades.glsl: uv = 0.5 + 0.5 (p.xy + o) / H.
-    const double H = h * double(f.mapSize) / tile;
-    const double tx = double(i % c.grid), ty = double(i / c.grid);
-    f.frame.cascades[i][0] = float(2.0 * h * (tx + 0.5) - H - cx);
-    f.frame.cascades[i][1] = float(2.0 * h * (ty + 0.5) - H - cy);
-    f.frame.cascades[i][2] = float(H);
-    f.frame.cascades[i][3] = float(splits[size_t(i) + 1]);
+    // The atlas frame of frame_cascades.glsl: uv = 0.5 + 0.5 (p.xy + o) / H (include/shadowc/frame.h).
+    setCascade(f.frame, i, cx, cy, h, splits[size_t(i) + 1], f.mapSize, c.grid);
     // Vulkan clip of the tile: x_c = (x - cx) / h, y_c = (y - cy) / h, z_c as fitSun's.
     glm::mat4 proj(0.0f);
     proj[0][0] = float(1.0 / h);

@@ -167,26 +167,18 @@ FrameSetup setupFrame(const Scene& scene, uint32_t mapSize, uint32_t width, uint
   }
   fitCamera(scene, f);
 
-  std::memcpy(f.frame.lightView, glm::value_ptr(f.lightView), sizeof f.frame.lightView);
-  const bool sun = scene.light.type == LightType::Sun;
-  f.frame.lightParams[0] = sun ? f.halfExtent : f.tanHalfFov;
-  f.frame.lightParams[1] = f.nearPlane;
-  f.frame.lightParams[2] = f.farPlane;
-  // A sun's lightWidth is the slope of its penumbra, 2 tan(angle / 2) (frame_ortho.glsl).
-  f.frame.lightParams[3] =
-      sun ? static_cast<float>(2.0 * std::tan(0.5 * glm::radians(double(scene.light.angleDegrees))))
-          : scene.light.width;
-  if (f.cube) f.frame.lightParams[3] = 2.0f * scene.light.radius;  // the sphere's diameter (frame_cube.glsl)
-  f.frame.lightShape[0] = f.cube                   ? 4.0f
-                          : sun                    ? 3.0f
-                          : scene.light.width <= 0 ? 2.0f
-                                                   : (scene.light.shape == LightShape::Disk ? 1.0f : 0.0f);
-  f.frame.mapInfo[0] = static_cast<float>(mapSize);
-  f.frame.mapInfo[1] = 1.0f / static_cast<float>(mapSize);
-  f.frame.screenInfo[0] = static_cast<float>(width);
-  f.frame.screenInfo[1] = static_cast<float>(height);
-  f.frame.screenInfo[2] = 1.0f / static_cast<float>(width);
-  f.frame.screenInfo[3] = 1.0f / static_cast<float>(height);
+  // The integration header's functions, as an engine fills the block (include/shadowc/frame.h).
+  const float* view = glm::value_ptr(f.lightView);
+  if (f.cube) {
+    setPointLight(f.frame, view, f.tanHalfFov, f.nearPlane, f.farPlane, scene.light.radius);
+  } else if (scene.light.type == LightType::Sun) {
+    setSunLight(f.frame, view, f.halfExtent, f.nearPlane, f.farPlane, glm::radians(double(scene.light.angleDegrees)));
+  } else {
+    setSpotLight(f.frame, view, f.tanHalfFov, f.nearPlane, f.farPlane, scene.light.width,
+                 scene.light.shape == LightShape::Disk);
+  }
+  setMapSize(f.frame, mapSize);
+  setScreenSize(f.frame, width, height);
   return f;
 }
 

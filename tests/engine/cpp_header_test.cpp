@@ -100,8 +100,9 @@ int compileTu(const std::filesystem::path& dir, const std::string& header, const
               const std::string& tu) {
   std::ofstream(dir / header, std::ios::binary) << headerText;
   std::ofstream(dir / "check.cpp", std::ios::binary) << "#include \"" << header << "\"\n" << tu;
-  const std::string cmd = std::string(SHADOWC_CXX_COMPILER) + " -std=c++20 -fsyntax-only -Wall -Wextra -Werror " +
-                          (dir / "check.cpp").string() + " 2>" + (dir / "log.txt").string();
+  const std::string cmd = std::string(SHADOWC_CXX_COMPILER) + " -std=c++20 -fsyntax-only -Wall -Wextra -Werror -I" +
+                          (test::sourceDir() / "include").string() + " " + (dir / "check.cpp").string() + " 2>" +
+                          (dir / "log.txt").string();
   return std::system(cmd.c_str());
 }
 

@@ -6,6 +6,7 @@
 #   first_build  configure tests/integration/consumer against it, build: both filters' outputs
 #   noop         build again, nothing changed: no output is rewritten
 #   touch_one    touch esm.shadow, build: exactly esm's outputs are rewritten, pcf_poisson16's not
+#   interface    an existing INTERFACE library as TARGET: building `all` compiles its filters
 #   intree       the same function in shadowc's own build (shadowc::shadowc is the in-tree
 #                executable, as after add_subdirectory): byte-identical outputs
 set -euo pipefail
@@ -24,6 +25,8 @@ install)
   for f in shadowc-config.cmake shadowc-config-version.cmake shadowc-targets.cmake ShadowcFilters.cmake; do
     [[ -f $prefix/lib/cmake/shadowc/$f ]] || fail "$f not installed"
   done
+  [[ -f $prefix/include/shadowc/frame.h ]] || fail "the integration header is not installed"
+  grep -q "shadowc::frame" "$prefix/lib/cmake/shadowc/shadowc-targets.cmake" || fail "no shadowc::frame target"
   ;;
 first_build)
   rm -rf "$proj" "$build"
@@ -58,6 +61,23 @@ touch_one)
   expected=$(find "$out/esm" -type f | sort)
   [[ -n $newer ]] || fail "touching esm.shadow rebuilt nothing"
   [[ $newer == "$expected" ]] || fail "rebuilt: [$newer], expected exactly esm's outputs: [$expected]"
+  ;;
+interface)
+  # An existing INTERFACE library as TARGET: `all` builds its filters (it builds nothing itself).
+  iproj=$work/interface iout=$work/interface-build/shaders/esm
+  rm -rf "$iproj" "$work/interface-build"
+  mkdir -p "$iproj"
+  cp "$src/samples/filters/esm.shadow" "$iproj/"
+  cat >"$iproj/CMakeLists.txt" <<'CMAKE'
+cmake_minimum_required(VERSION 3.25)
+project(shadowc_interface LANGUAGES NONE)
+find_package(shadowc 0.1 CONFIG REQUIRED)
+add_library(engine_shaders INTERFACE)
+shadowc_add_filters(TARGET engine_shaders FILES ${CMAKE_CURRENT_SOURCE_DIR}/esm.shadow OUTPUT_DIR shaders)
+CMAKE
+  cmake -S "$iproj" -B "$work/interface-build" -G "$gen" -DCMAKE_PREFIX_PATH="$prefix"
+  cmake --build "$work/interface-build"
+  [[ -s $iout/manifest.json && -s $iout/esm_lookup.glsl ]] || fail "the INTERFACE target's filters were not built"
   ;;
 intree)
   cmake --build "$bin" --target shadowc_intree_filters
