@@ -9,14 +9,14 @@ struct shadowc_Frame {
 shadowc_Frame shadowc_frame();
 
 #line 1 "frame_block.glsl"
-#line 15
+#line 16
 layout(set = 0, binding = 0, std140)uniform shadowc_FrameBlock {
   mat4 lightView;
   vec4 lightParams;
   vec4 lightShape;
   vec4 mapInfo;
   vec4 screenInfo;
-#line 26
+#line 27
 } shadowc_frameBlock;
 
 shadowc_Frame shadowc_frame(){ return shadowc_Frame(shadowc_frameBlock . lightView, shadowc_frameBlock . lightParams);}
