@@ -15,10 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/backend/spirv_backend.h"
 #include "compiler/driver/driver.h"
-#include "compiler/emit/shader_emitter.h"
-#include "compiler/plan/planner.h"
 #include "runtime/executor/pass_executor.h"  // rt::median
 #include "shadowc_source_dir.h"
 
@@ -31,7 +28,7 @@ double ms(Clock::time_point a, Clock::time_point b) { return std::chrono::durati
 
 std::string recipeFlags() {
   std::string s;
-  for (const auto& f : shadowc::optimizationRecipe()) s += " " + f;
+  for (const auto& f : shadowc::driver::optimizationRecipe()) s += " " + f;
   return s;
 }
 
@@ -65,34 +62,25 @@ int main(int argc, char** argv) {
     const fs::path dir = tmp / name;
     // stem, glsl, and the calls the driver keeps (an unrolled quadtree's node callbacks: the
     // same -O compile as the driver's; the external spirv-opt of (c) has no such option).
-    struct Shader {
-      std::string stem, glsl;
-      std::vector<std::string> keep;
-    };
-    const shadowc::PassGraph graph = shadowc::planPasses(r.artifact->spec);
-    std::vector<Shader> shaders;
-    for (const auto& f : r.artifact->files)
-      if (f.name.ends_with(".glsl") && f.name != r.artifact->manifest.shade.glsl) {
-        Shader s{f.name.substr(0, f.name.size() - 5), f.bytes, {}};
-        for (const shadowc::PassSource& src : graph.sources)
-          if (src.stem == s.stem) s.keep = shadowc::keptCalls(src.values);
-        shaders.push_back(std::move(s));
-      }
+    const std::vector<shadowc::driver::ShaderText> shaders = shadowc::driver::shaderTexts(*r.artifact);
     // The external programs of (c) read the GLSL from disk.
     if (!shadowc::driver::writeArtifact(dir, *r.artifact).empty()) return 1;
 
     std::vector<double> in, full, ext;
     for (int i = 0; i < n; ++i) {
       auto t0 = Clock::now();
-      for (const Shader& s : shaders) {
-        const auto res = shadowc::compileGlsl(s.glsl, shadowc::ShaderStage::Compute, s.stem, {}, {true, true, s.keep});
-        if (!res.ok) return 1;
+      for (const shadowc::driver::ShaderText& s : shaders) {
+        std::string log;
+        if (!shadowc::driver::compileShaderText(s, log)) {
+          fmt::print(stderr, "{}", log);
+          return 1;
+        }
       }
       auto t1 = Clock::now();
       const auto again = shadowc::driver::compileFile(file.string());
       auto t2 = Clock::now();
       if (!again.ok) return 1;
-      for (const Shader& s : shaders) {
+      for (const shadowc::driver::ShaderText& s : shaders) {
         const std::string base = (dir / s.stem).string();
         const std::string cmd = "glslangValidator -S comp -V --target-env vulkan1.2 -o " + base + ".ext.spv " + base +
                                 ".glsl >/dev/null && spirv-opt --target-env=vulkan1.2" + recipe + " " + base +

@@ -96,6 +96,7 @@ std::vector<ReportRow> planReport(rt::VulkanContext& ctx, const SweepData& data,
     try {
       const PlanResult p = planOnScenes(ctx, pr, model, sc.scenes, &cache);
       row.plan = p.measured;
+      row.planText = p.text;
       row.confirmed = p.tried.size();
     } catch (const PlanError& e) {
       row.planError = e.what();

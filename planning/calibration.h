@@ -43,6 +43,7 @@ struct ReportRow {
   double bound = 0, best = 0;
   std::string bestVariant;
   Measurement plan, everything, fastest;
+  std::string planText;  // the filter description the planner wrote for `plan`
   size_t confirmed = 0;   // candidates the planner measured (of the catalog)
   std::string planError;  // when planning failed
 };

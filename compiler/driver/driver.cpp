@@ -6,8 +6,10 @@
 #include <map>
 #include <utility>
 
+#include "backend/spirv_backend.h"
+#include "driver/cross_outputs.h"
+#include "driver/emit_stage.h"
 #include "emit/cpp_header.h"
-#include "emit/cross_outputs.h"
 #include "emit/filter_emitter.h"
 #include "emit/output_writer.h"
 #include "plan/generic_block.h"
@@ -24,8 +26,6 @@ std::string locatedError(const FilterSpec& spec, const std::string& message) {
          ": error: " + message + "\n";
 }
 
-// A spec built in code re-enters the pipeline here. The checker's spec validation (spec
-// printer + check, engineer B) replaces the body: `return loadFilterSource(printSpec(spec), ...)`.
 // A spec built in code is valid when the checker accepts its printed description
 // (spec/print_filter.h): one checker decides for text and for code alike. The errors then point
 // into the printed text, which the log shows. The caller's spec itself is compiled (it may carry
@@ -36,13 +36,9 @@ LoadResult checkBuiltSpec(const FilterSpec& spec) {
   return checked;
 }
 
-// Emit and run the backend: the one place the planner's output meets the emitter.
-FilterEmitResult emitStage(const FilterSpec& spec, const PassGraph& plan, const Options& options) {
-  EmitOptions eo;
-  eo.optimize = options.optimize;
-  eo.warningsAsErrors = options.warningsAsErrors;
-  eo.lookup = options.lookup;
-  return emitPassGraph(spec, plan, eo);
+// Emit and run the backend (emit_stage.h): the one place the planner's output meets the emitter.
+FilterEmitResult emitAndCompile(const FilterSpec& spec, const PassGraph& plan, const Options& options) {
+  return emitStage(spec, plan, {{options.optimize, options.warningsAsErrors}, options.lookup});
 }
 
 // The outputs derived from the SPIR-V (HLSL, MSL, the C++ header), added to the emitted files.
@@ -89,7 +85,7 @@ Result finish(const LoadResult& loaded, const Options& options) {
   }
   FilterEmitResult emitted;
   try {
-    emitted = emitStage(spec, *r.plan, options);
+    emitted = emitAndCompile(spec, *r.plan, options);
   } catch (const std::exception& e) {
     r.log += locatedError(spec, e.what());
     return r;
@@ -166,6 +162,29 @@ std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec&
   if (engineOutputs.count(OutputKind::CppHeader)) names.insert(cppHeaderFileName(spec.name));
   return {names.begin(), names.end()};
 }
+
+std::vector<ShaderText> shaderTexts(const Artifact& artifact) {
+  std::vector<ShaderText> out;
+  for (const EmittedFile& f : artifact.files)
+    if (outputKindOf(f.name) == OutputKind::Glsl && f.name != artifact.manifest.shade.glsl) {
+      ShaderText s{f.name.substr(0, f.name.rfind('.')), f.bytes, {}};
+      for (const PassSource& src : artifact.plan.sources)
+        if (src.stem == s.stem) s.keepCalls = keptCalls(src.values);
+      out.push_back(std::move(s));
+    }
+  return out;
+}
+
+bool compileShaderText(const ShaderText& shader, std::string& log) {
+  EmittedShader sh;
+  sh.name = shader.stem;
+  sh.glsl = shader.glsl;
+  sh.keepCalls = shader.keepCalls;
+  std::vector<uint32_t> words;
+  return compileEmitted(sh, {}, words, log);
+}
+
+const std::vector<std::string>& optimizationRecipe() { return shadowc::optimizationRecipe(); }
 
 std::string writeArtifact(const std::filesystem::path& dir, const Artifact& artifact, const std::set<OutputKind>& kinds,
                           const std::vector<EmittedFile>& extra) {

@@ -45,7 +45,7 @@ struct Options {
   // --generic: the shade pass as engines usually ship it, its numeric options and tables in a
   // uniform block the runtime fills from the manifest, its loops dynamic (plan/generic_block.h).
   bool generic = false;
-  std::set<OutputKind> engineOutputs;  // any of Hlsl, Msl, CppHeader (emit/cross_outputs.h, emit/cpp_header.h)
+  std::set<OutputKind> engineOutputs;  // any of Hlsl, Msl, CppHeader (driver/cross_outputs.h, emit/cpp_header.h)
 };
 
 // A compiled filter, in memory.
@@ -82,6 +82,18 @@ Result compileSpec(const FilterSpec& spec, const Options& options = {});
 // outputs asked for.
 std::vector<std::string> plannedOutputs(const PassGraph& plan, const FilterSpec& spec,
                                         const std::set<OutputKind>& engineOutputs = {});
+
+// A compiled artifact's pass shaders (not the lookup), each as the driver compiled it:
+// bench/compile_bench times the backend alone on these.
+struct ShaderText {
+  std::string stem, glsl;
+  std::vector<std::string> keepCalls;  // calls the -O compile keeps (emit/shader_emitter.h keptCalls)
+};
+std::vector<ShaderText> shaderTexts(const Artifact& artifact);
+// The driver's -O compile of one of them; false with the backend's log appended.
+bool compileShaderText(const ShaderText& shader, std::string& log);
+// The -O recipe, in order, as spirv-opt flags (`shadowc compile --print-recipe`).
+const std::vector<std::string>& optimizationRecipe();
 
 // Writes the artifact's files of the given kinds (all when empty) plus `extra` files into
 // `dir`, all-or-nothing (emit/output_writer.h). Returns "" on success, else one line.

@@ -23,17 +23,14 @@ constexpr const char* kDefaultSignature = "float shadowc_visibility(vec3 worldPo
 // #version and #line (an engine #includes it into its own shader after its #version line).
 // The frame block is left out of the preprocessed body (SHADOWC_FRAME_EXTERNAL) and appended
 // inside its own #ifndef, so the engine's macro still decides (lookup_interface.h).
-bool emitLookup(const FilterSpec& spec, const Specialization& lookup, const LookupLayout& layout, std::string& text,
-                std::string& log) {
+bool emitLookup(const FilterSpec& spec, const Specialization& lookup, const LookupLayout& layout,
+                const GlslPreprocessor& preprocess, std::string& text, std::string& log) {
   const std::string wrapper = std::string("#version 460\n#extension GL_GOOGLE_include_directive : require\n") +
                               layout.defines + "#define SHADOWC_FRAME_EXTERNAL 1\n" + kSpecializeMarker +
                               "\n#include \"" + kLookupEntry + "\"\n";
   std::string preprocessed;
   const std::string name = std::string("templates/") + kLookupEntry;
-  const SpirvResult pp = preprocessGlsl(insertSpecialization(wrapper, lookup), ShaderStage::Compute, name,
-                                        templateIncludes(), preprocessed);
-  log += pp.log;
-  if (!pp.ok) return false;
+  if (!preprocess(insertSpecialization(wrapper, lookup), name, templateIncludes(), preprocessed, log)) return false;
   std::string body;
   for (const std::string& line : {std::string("#version 460"), std::string("#extension GL_GOOGLE_include_directive")}) {
     const size_t at = preprocessed.find(line);
@@ -45,13 +42,7 @@ bool emitLookup(const FilterSpec& spec, const Specialization& lookup, const Look
          "'.\n// Include after your #version line (GLSL 4.50 or later; self-contained, needs no extension).\n"
          "// Every global is prefixed shadowc_; set and bindings in manifest.json \"shade\". Do not edit.\n" +
          body + (body.ends_with("\n") ? "" : "\n") + layout.frameBlock;
-  // The file must compile where an engine includes it: check it inside an empty compute shader.
-  const std::string check = "#version 460\n" + text + "\nlayout(local_size_x = 1) in;\nvoid main() {}\n";
-  BackendOptions bo;
-  bo.optimize = false;
-  const SpirvResult r = compileGlsl(check, ShaderStage::Compute, lookupFileName(spec.name), {}, bo);
-  if (!r.ok) log += r.log;
-  return r.ok;
+  return true;
 }
 
 std::string signatureOf(const std::string& lookupText) {
@@ -72,24 +63,23 @@ std::string spirvBytes(const std::vector<uint32_t>& words) {
   return bytes;
 }
 
-FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, const EmitOptions& options) {
-  FilterEmitResult result;
+FilterSources emitSources(const FilterSpec& spec, const PassGraph& graph, const EmitOptions& options) {
+  FilterSources result;
   const PassSource* shade = shadeSource(graph);
   if (!shade || graph.sources.size() != graph.manifest.passes.size())
     throw InternalError("the pass graph of '" + spec.name + "' has no shade pass or a source per pass");
+  if (!options.preprocess) throw InternalError("the emitter was given no GLSL preprocessor");
   Manifest m = graph.manifest;
 
   // One shader per distinct output stem (mip1..mipK share "mip", minmax1..K share "minmax").
-  std::map<std::string, EmittedShader> shaders;
-  ShaderEmitOptions so{options.optimize, options.warningsAsErrors};
   // The local size of each form is read back from its shader.
   auto emitted = [&](const PassSource& src) -> const EmittedShader* {
-    auto it = shaders.find(src.stem);
-    if (it == shaders.end()) {
-      EmittedShader sh = emitComputeShader(src.templatePath, src.values, so);
+    auto it = result.shaders.find(src.stem);
+    if (it == result.shaders.end()) {
+      EmittedShader sh = emitComputeShader(src.templatePath, src.values, options.preprocess, options.warningsAsErrors);
       result.log += sh.log;
       if (!sh.ok) return nullptr;
-      it = shaders.emplace(src.stem, std::move(sh)).first;
+      it = result.shaders.emplace(src.stem, std::move(sh)).first;
     }
     return &it->second;
   };
@@ -106,32 +96,48 @@ FilterEmitResult emitPassGraph(const FilterSpec& spec, const PassGraph& graph, c
       m.passes[i].forms[k].localSize = form->localSize;
     }
   }
-  for (auto& [stem, sh] : shaders) {
-    result.files.push_back({stem + ".glsl", std::move(sh.glsl)});
-    result.files.push_back({stem + ".spv", spirvBytes(sh.spirv)});
-  }
 
   const auto shadePass =
       std::find_if(m.passes.begin(), m.passes.end(), [](const Pass& p) { return p.name == "shade"; });
   if (shadePass == m.passes.end()) throw InternalError("the pass graph of '" + spec.name + "' has no pass named shade");
   LookupLayout layout;
-  if (!lookupLayout(*shadePass, options.lookup, layout, result.log, spec.cascades.count)) return result;
-  std::string lookupText;
+  if (!lookupLayout(*shadePass, options.lookup, options.preprocess, layout, result.log, spec.cascades.count))
+    return result;
   // The includable lookup is the shade pass's code: the same values, the lookup entry template.
-  if (!emitLookup(spec, shade->values, layout, lookupText, result.log)) return result;
-  result.files.push_back({lookupFileName(spec.name), lookupText});
+  if (!emitLookup(spec, shade->values, layout, options.preprocess, result.lookupText, result.log)) return result;
+  result.lookupCheck = "#version 460\n" + result.lookupText + "\nlayout(local_size_x = 1) in;\nvoid main() {}\n";
 
   m.compilerVersion = SHADOWC_VERSION;
   m.spec = specToJson(spec);
   m.shade.glsl = lookupFileName(spec.name);
   m.shade.function = kLookupFunction;
-  m.shade.signature = signatureOf(lookupText);
+  m.shade.signature = signatureOf(result.lookupText);
   m.shade.set = options.lookup.set;
   m.shade.bindings = layout.bindings;
+  result.manifest = std::move(m);
+  result.ok = true;
+  return result;
+}
+
+FilterEmitResult emitOutputs(const FilterSpec& spec, FilterSources sources,
+                             const std::map<std::string, std::vector<uint32_t>>& spirv) {
+  FilterEmitResult result;
+  result.log = std::move(sources.log);
+  Manifest m = std::move(sources.manifest);
+  for (auto& [stem, sh] : sources.shaders) {
+    const auto words = spirv.find(stem);
+    if (words == spirv.end()) throw InternalError("shader '" + stem + "' of '" + spec.name + "' was not compiled");
+    result.files.push_back({stem + ".glsl", std::move(sh.glsl)});
+    result.files.push_back({stem + ".spv", spirvBytes(words->second)});
+  }
+  result.files.push_back({lookupFileName(spec.name), std::move(sources.lookupText)});
+
   // A generic shader is the same for many filters: its values (the manifest's parameter block)
   // are hashed too, as a pseudo-file, so that the hash still tells two filters apart.
   std::vector<EmittedFile> hashed = result.files;
-  if (shadePass->parameters)
+  const auto shadePass =
+      std::find_if(m.passes.begin(), m.passes.end(), [](const Pass& p) { return p.name == "shade"; });
+  if (shadePass != m.passes.end() && shadePass->parameters)
     hashed.push_back(
         {"manifest.json:parameters", toJson(m)["passes"][size_t(shadePass - m.passes.begin())]["parameters"].dump()});
   // So are the buffers' values (the quadtree tables): the shader reads them, it does not hold them.

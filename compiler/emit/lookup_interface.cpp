@@ -5,7 +5,6 @@
 
 #include <stdexcept>
 
-#include "backend/spirv_backend.h"
 #include "emit/glsl_tidy.h"
 #include "emit/template_includes.h"
 
@@ -38,8 +37,8 @@ const char* macroOf(const std::string& image) {
 
 }  // namespace
 
-bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, LookupLayout& out, std::string& log,
-                  int cascades) {
+bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, const GlslPreprocessor& preprocess,
+                  LookupLayout& out, std::string& log, int cascades) {
   if (placement.set > kMaxLookupSet || placement.bindingBase > kMaxLookupBindingBase)
     throw std::invalid_argument(
         fmt::format("lookup placement out of range: set {} (at most {}), binding base {} (at most {})", placement.set,
@@ -59,10 +58,7 @@ bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, Looku
   const std::string wrapper = "#version 460\n#extension GL_GOOGLE_include_directive : require\n" + out.defines +
                               cascadeDefine + "#include \"frame_block.glsl\"\n";
   std::string text;
-  const SpirvResult pp =
-      preprocessGlsl(wrapper, ShaderStage::Compute, "templates/frame_block.glsl", templateIncludes(), text);
-  log += pp.log;
-  if (!pp.ok) return false;
+  if (!preprocess(wrapper, "templates/frame_block.glsl", templateIncludes(), text, log)) return false;
   std::string body;
   for (size_t at = 0; at < text.size();) {
     size_t end = text.find('\n', at);

@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "emit/glsl_preprocessor.h"
 #include "manifest/manifest.h"
 
 namespace shadowc {
@@ -34,7 +35,7 @@ struct LookupLayout {
 // visibility output). Throws std::invalid_argument on an image the lookup has no macro for or a
 // placement out of range; returns false with the preprocessor's message in `log`.
 // `cascades` > 0: the block carries a cascaded sun's fields (frame_block.glsl).
-bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, LookupLayout& out, std::string& log,
-                  int cascades = 0);
+bool lookupLayout(const Pass& shadePass, const LookupPlacement& placement, const GlslPreprocessor& preprocess,
+                  LookupLayout& out, std::string& log, int cascades = 0);
 
 }  // namespace shadowc

@@ -11,9 +11,6 @@
 namespace shadowc {
 namespace {
 
-// glslang's info log says "WARNING:" for warnings that do not fail a compile.
-bool hasWarning(const std::string& log) { return log.find("WARNING:") != std::string::npos; }
-
 std::array<uint32_t, 3> localSizeOf(const std::string& glsl) {
   std::array<uint32_t, 3> size{1, 1, 1};
   static const std::regex re(R"(local_size_([xyz])\s*=\s*(\d+))");
@@ -23,6 +20,8 @@ std::array<uint32_t, 3> localSizeOf(const std::string& glsl) {
 }
 
 }  // namespace
+
+bool hasWarning(const std::string& log) { return log.find("WARNING:") != std::string::npos; }
 
 std::string specializeTemplate(const std::string& templatePath, const Specialization& specialization,
                                std::string& error) {
@@ -51,9 +50,9 @@ std::vector<std::string> keptCalls(const Specialization& specialization) {
 }
 
 EmittedShader emitComputeShader(const std::string& templatePath, const Specialization& specialization,
-                                const ShaderEmitOptions& options) {
+                                const GlslPreprocessor& preprocess, bool warningsAsErrors) {
   EmittedShader out;
-  const std::string name = "templates/" + templatePath;  // diagnostics point into the template
+  out.name = "templates/" + templatePath;  // diagnostics point into the template
   std::string error;
   const std::string specialized = specializeTemplate(templatePath, specialization, error);
   if (!error.empty()) {
@@ -61,27 +60,14 @@ EmittedShader emitComputeShader(const std::string& templatePath, const Specializ
     return out;
   }
   std::string preprocessed;
-  const SpirvResult pp = preprocessGlsl(specialized, ShaderStage::Compute, name, templateIncludes(), preprocessed);
-  out.log += pp.log;
-  if (!pp.ok) return out;
-  if (options.warningsAsErrors && hasWarning(pp.log)) {
-    out.log += name + ": error: warnings treated as errors (-Werror)\n";
+  if (!preprocess(specialized, out.name, templateIncludes(), preprocessed, out.log)) return out;
+  if (warningsAsErrors && hasWarning(out.log)) {
+    out.log += out.name + ": error: warnings treated as errors (-Werror)\n";
     return out;
   }
   out.glsl = tidyPreprocessed(preprocessed);
   out.localSize = localSizeOf(out.glsl);
-  // Compile the emitted text itself, so the .spv is exactly the .glsl that ships.
-  BackendOptions bo;
-  bo.optimize = options.optimize;
-  bo.keepCalls = keptCalls(specialization);
-  SpirvResult spv = compileGlsl(out.glsl, ShaderStage::Compute, name, templateIncludes(), bo);
-  out.log += spv.log;
-  if (!spv.ok) return out;
-  if (options.warningsAsErrors && hasWarning(spv.log)) {
-    out.log += name + ": error: warnings treated as errors (-Werror)\n";
-    return out;
-  }
-  out.spirv = std::move(spv.words);
+  out.keepCalls = keptCalls(specialization);
   out.ok = true;
   return out;
 }

@@ -1,7 +1,7 @@
-// One shader from one template: insert the specialization at the `// @shadowc:specialize`
-// marker (#defines, generated tables, then `#line` back into the template), run the glslang
-// preprocessor so the emitted GLSL holds only folded, used code, tidy it, and compile exactly
-// that text to SPIR-V (glslang -> spirv-opt recipe -> spirv-val, in process).
+// One shader's text from one template: insert the specialization at the `// @shadowc:specialize`
+// marker (#defines, generated tables, then `#line` back into the template), run the GLSL
+// preprocessor (glsl_preprocessor.h) so the emitted GLSL holds only folded, used code, and tidy
+// it. The driver compiles exactly that text to SPIR-V (driver/shader_compile.h).
 #pragma once
 
 #include <array>
@@ -9,29 +9,29 @@
 #include <string>
 #include <vector>
 
-#include "backend/spirv_backend.h"
+#include "emit/glsl_preprocessor.h"
 #include "plan/specialization.h"
 
 namespace shadowc {
 
 struct EmittedShader {
   bool ok = false;
+  std::string name;  // "templates/<path>": what diagnostics point into
   std::string log;   // diagnostics, "templates/<path>:line: ..." form
   std::string glsl;  // the emitted (preprocessed) GLSL
-  std::vector<uint32_t> spirv;
   std::array<uint32_t, 3> localSize{1, 1, 1};  // read back from the emitted layout(local_size_*)
+  std::vector<std::string> keepCalls;          // keptCalls(specialization)
 };
 
-struct ShaderEmitOptions {
-  bool optimize = true;           // -O recipe; false = -O0
-  bool warningsAsErrors = false;  // a preprocessor/compiler warning fails the shader
-};
-
+// `warningsAsErrors`: a preprocessor warning fails the shader.
 EmittedShader emitComputeShader(const std::string& templatePath, const Specialization& specialization,
-                                const ShaderEmitOptions& options);
+                                const GlslPreprocessor& preprocess, bool warningsAsErrors = false);
 
-// The functions a shader's -O compile keeps as calls (BackendOptions::keepCalls): an unrolled
-// quadtree's node callbacks (backend/dont_inline.h). bench/compile_bench uses the same list.
+// glslang's info log says "WARNING:" for warnings that do not fail a compile.
+bool hasWarning(const std::string& log);
+
+// The functions a shader's -O compile keeps as calls: an unrolled quadtree's node callbacks,
+// whose inlined copies made the optimizer take seconds (backend/dont_inline.h).
 std::vector<std::string> keptCalls(const Specialization& specialization);
 
 // The specialized (not yet preprocessed) text: template with the block at the marker.

@@ -6,7 +6,7 @@ namespace shadowc {
 
 std::string_view templateText(std::string_view path) { return templates::find(path); }
 
-IncludeResolver templateIncludes() {
+TemplateResolver templateIncludes() {
   return [](const std::string& name) -> std::optional<std::string> {
     // The backend does not pass the including file's folder, so siblings inside lookup/ and
     // passes/ are found by trying those folders after the templates root.

@@ -3,11 +3,13 @@
 // `glslangValidator -I templates` resolves them when a template is compiled on its own.
 #pragma once
 
-#include "backend/spirv_backend.h"
+#include <string_view>
+
+#include "emit/glsl_preprocessor.h"
 
 namespace shadowc {
 
-IncludeResolver templateIncludes();
+TemplateResolver templateIncludes();
 
 // The template's text, or an empty view when the embedded tree has no such file.
 std::string_view templateText(std::string_view path);

@@ -1,10 +1,14 @@
-// The pipeline's layering: data flows load -> check ->
-// plan -> emit -> backend, and only compiler/driver/ wires plan and emit together. These tests
-// scan the sources' #include lines and the planner's string literals so that it stays so; each
-// rule has a sibling that plants a violation and proves the scanner reports it.
+// The pipeline's layering: data flows load -> check -> plan -> emit -> backend, and only
+// compiler/driver/ wires plan and emit together and calls the backend. The build holds the stage
+// order (each stage target sees only its own and earlier stages' headers: planted_includes.cmake);
+// these tests scan every folder's #include lines and the planner's string literals for what the
+// build cannot see; each rule has a sibling that plants a violation and proves the scanner
+// reports it.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <filesystem>
+#include <set>
 #include <regex>
 #include <string>
 #include <vector>
@@ -21,12 +25,17 @@ struct SourceFile {
   std::string text;
 };
 
+// Every folder that holds the project's C++ (all of them: a new one must be added here, which
+// EveryFolderWithCppIsScanned checks).
+constexpr std::array kScannedFolders = {"compiler", "cli",     "runtime", "validation", "planning",
+                                        "sweep",    "samples", "bench",   "tests",      "include"};
+
 // Every C++ source and header of the project outside build trees; tests/architecture itself
 // is left out (its planted violations are string literals, not includes, but keep it simple).
 std::vector<SourceFile> projectSources() {
   std::vector<SourceFile> out;
   const fs::path root = test::sourceDir();
-  for (const char* top : {"compiler", "cli", "runtime", "validation", "bench", "tests"}) {
+  for (const char* top : kScannedFolders) {
     if (!fs::exists(root / top)) continue;
     for (const auto& e : fs::recursive_directory_iterator(root / top)) {
       const std::string ext = e.path().extension().string();
@@ -125,6 +134,17 @@ std::vector<std::string> glslTextInPlan(const std::vector<SourceFile>& files) {
   return bad;
 }
 
+// Rule 4: inside compiler/, only driver/ includes the backend (emit renders text only).
+std::vector<std::string> backendOutsideTheDriver(const std::vector<SourceFile>& files) {
+  std::vector<std::string> bad;
+  for (const SourceFile& f : files)
+    if (f.path.starts_with("compiler/") && !f.path.starts_with("compiler/driver/") &&
+        !f.path.starts_with("compiler/backend/"))
+      for (const std::string& inc : includesOf(f.text))
+        if (inc.starts_with("backend/")) bad.push_back(f.path + " includes " + inc);
+  return bad;
+}
+
 std::string joined(const std::vector<std::string>& v) {
   std::string s;
   for (const std::string& x : v) s += x + "\n";
@@ -140,6 +160,33 @@ TEST(PipelineLayering, TheScanSeesTheSources) {
   }
   EXPECT_GE(plan, 8);  // planner, shade plan, pass graph, tables, ...
   EXPECT_GE(driverOrEmit, 8);
+}
+
+TEST(PipelineLayering, EveryFolderWithCppIsScanned) {
+  const fs::path root = test::sourceDir();
+  const std::set<std::string> scanned(kScannedFolders.begin(), kScannedFolders.end());
+  for (const auto& top : fs::directory_iterator(root)) {
+    const std::string name = top.path().filename().string();
+    if (!top.is_directory() || name.starts_with(".") || name.starts_with("build") || scanned.count(name)) continue;
+    for (const auto& e : fs::recursive_directory_iterator(top.path())) {
+      const std::string ext = e.path().extension().string();
+      EXPECT_FALSE(e.is_regular_file() && (ext == ".cpp" || ext == ".h"))
+          << fs::relative(e.path(), root).generic_string() << " is C++ in a folder the layering scan skips";
+    }
+  }
+}
+
+TEST(PipelineLayering, OnlyTheDriverIncludesTheBackend) {
+  EXPECT_EQ(joined(backendOutsideTheDriver(projectSources())), "");
+}
+
+TEST(PipelineLayering, APlantedBackendIncludeInEmitIsReported) {
+  const std::vector<SourceFile> planted = {{"compiler/emit/shader_emitter.cpp", "#include \"backend/spirv_backend.h\"\n"},
+                                           {"compiler/driver/driver.cpp", "#include \"backend/spirv_backend.h\"\n"},
+                                           {"runtime/raster/r.cpp", "#include \"backend/spirv_backend.h\"\n"}};
+  const std::vector<std::string> bad = backendOutsideTheDriver(planted);
+  ASSERT_EQ(bad.size(), 1u) << joined(bad);
+  EXPECT_EQ(bad[0], "compiler/emit/shader_emitter.cpp includes backend/spirv_backend.h");
 }
 
 TEST(PipelineLayering, NoPlanFileIncludesEmit) { EXPECT_EQ(joined(planIncludesEmit(projectSources())), ""); }

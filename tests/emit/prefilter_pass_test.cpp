@@ -4,7 +4,8 @@
 
 #include <string>
 
-#include "emit/shader_emitter.h"
+#include "backend/spirv_backend.h"
+#include "driver/shader_compile.h"
 #include "emit/template_includes.h"
 #include "plan/planner.h"
 #include "plan/test_specs.h"
@@ -50,7 +51,7 @@ TEST(PrefilterPasses, EveryPassOfEveryVariantCompilesAndValidatesAtBothLevels) {
     for (const PassSource& src : g.sources) {
       if (src.templatePath == "shade.comp" || !seen.insert(src.stem).second) continue;
       for (bool optimize : {true, false}) {
-        const EmittedShader sh = emitComputeShader(src.templatePath, src.values, {optimize, true});
+        const driver::CompiledShader sh = driver::compileShader(src.templatePath, src.values, {optimize, true});
         ASSERT_TRUE(sh.ok) << spec.name << " " << src.stem << (optimize ? " -O" : " -O0") << "\n" << sh.log;
         EXPECT_EQ(validateSpirv(sh.spirv), "") << src.stem;
         EXPECT_EQ(sh.glsl.find("@shadowc:specialize"), std::string::npos);  // marker replaced
@@ -66,7 +67,7 @@ TEST(PrefilterPasses, LocalSizeIsReadBackFromTheEmittedShader) {
   const PassGraph g = planPasses(test::vssmInt32Spec());
   for (const PassSource& src : g.sources) {
     if (src.stem != "sat_rows" && src.stem != "moments") continue;
-    const EmittedShader sh = emitComputeShader(src.templatePath, src.values, {});
+    const driver::CompiledShader sh = driver::compileShader(src.templatePath, src.values, {});
     ASSERT_TRUE(sh.ok) << sh.log;
     const std::array<uint32_t, 3> expected =
         src.stem == "sat_rows" ? std::array<uint32_t, 3>{64, 1, 1} : std::array<uint32_t, 3>{8, 8, 1};
@@ -78,13 +79,13 @@ TEST(PrefilterPasses, UnusedWarpsAndSatKindsAreAbsentFromTheEmittedGlsl) {
   const PassGraph g = planPasses(test::vssmInt32Spec());
   for (const PassSource& src : g.sources) {
     if (src.stem == "moments") {
-      const EmittedShader sh = emitComputeShader(src.templatePath, src.values, {});
+      const driver::CompiledShader sh = driver::compileShader(src.templatePath, src.values, {});
       ASSERT_TRUE(sh.ok) << sh.log;
       EXPECT_EQ(sh.glsl.find("exp("), std::string::npos) << "linear warp must not carry the EVSM code";
       EXPECT_EQ(sh.glsl.find("splitsImage"), std::string::npos);
     }
     if (src.stem == "sat_rows") {
-      const EmittedShader sh = emitComputeShader(src.templatePath, src.values, {});
+      const driver::CompiledShader sh = driver::compileShader(src.templatePath, src.values, {});
       ASSERT_TRUE(sh.ok) << sh.log;
       EXPECT_NE(sh.glsl.find("uimage2DArray"), std::string::npos);
       EXPECT_NE(sh.glsl.find("65536.0"), std::string::npos) << "16.16 fixed point encode";
@@ -104,7 +105,7 @@ TEST(PrefilterPasses, ErrorsPointIntoTheTemplateLine) {
   Specialization l;
   l.add("SHADOWC_BLUR_RADIUS", 2LL);
   l.add("SHADOWC_BLUR_WEIGHTS", RealList{{1.0}});  // 1 weight, 3 needed
-  const EmittedShader sh = emitComputeShader("passes/blur.comp", l, {});
+  const driver::CompiledShader sh = driver::compileShader("passes/blur.comp", l, {});
   ASSERT_FALSE(sh.ok);
   const std::string text(templateText("passes/blur.comp"));
   const size_t at = text.find("= SHADOWC_BLUR_WEIGHTS;");
@@ -114,7 +115,7 @@ TEST(PrefilterPasses, ErrorsPointIntoTheTemplateLine) {
 }
 
 TEST(PrefilterPasses, UnknownTemplateIsAnError) {
-  const EmittedShader sh = emitComputeShader("passes/nope.comp", {}, {});
+  const driver::CompiledShader sh = driver::compileShader("passes/nope.comp", {}, {});
   EXPECT_FALSE(sh.ok);
   EXPECT_NE(sh.log.find("template not found"), std::string::npos);
 }

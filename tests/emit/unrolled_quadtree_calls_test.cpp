@@ -6,7 +6,7 @@
 #include <string>
 
 #include "backend/spirv_backend.h"
-#include "emit/shader_emitter.h"
+#include "driver/shader_compile.h"
 #include "plan/planner.h"
 #include "plan/test_specs.h"
 
@@ -20,7 +20,7 @@ std::string shadeDisassembly(QuadtreeTraversal traversal) {
   const PassGraph g = planPasses(spec);
   const PassSource* shade = shadeSource(g);
   if (!shade) return "no shade pass";
-  const EmittedShader sh = emitComputeShader(shade->templatePath, shade->values, {});
+  const driver::CompiledShader sh = driver::compileShader(shade->templatePath, shade->values, {});
   if (!sh.ok) return "failed: " + sh.log;
   EXPECT_EQ(validateSpirv(sh.spirv), "");
   return disassembleSpirv(sh.spirv);

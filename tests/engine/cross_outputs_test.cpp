@@ -3,7 +3,7 @@
 // unless hlsl_roundtrip_exceptions.txt gives the reason for that file (an entry that now passes
 // is an error too, so the list cannot go stale). MSL cannot be compiled here (no Metal
 // compiler on Linux): its check is structural.
-#include "emit/cross_outputs.h"
+#include "driver/cross_outputs.h"
 
 #include <gtest/gtest.h>
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "planning/calibration_sweep.h"
+#include "planning/fresh_validate.h"
 #include "runtime/vulkan/vulkan_context.h"
 #include "support/test_support.h"
 #include "sweep/results_io.h"
@@ -119,7 +120,12 @@ TEST(CalibrationSweep, ModelIsFittedFromTheSweepRows) {
   const auto report = planning::planReport(context(), data, model);
   ASSERT_EQ(report.size(), 1u);
   EXPECT_TRUE(report[0].planError.empty()) << report[0].planError;
-  EXPECT_LE(report[0].plan.worstRmse, report[0].bound);
+  // Independently: the description the planner wrote, compiled from a file and validated on a
+  // freshly traced reference (fresh_validate.h), meets the bound.
+  EXPECT_LE(test::validateWrittenPlan(context(), report[0].planText, "two_planes", request.screen, request.map,
+                                      request.samples)
+                .rmse,
+            report[0].bound);
   EXPECT_GE(report[0].confirmed, 1u);
   EXPECT_DOUBLE_EQ(report[0].plan.worstMs, data.scenes[0].byName.at(report[0].plan.variant).worstMs);
   EXPECT_LE(report[0].fastest.worstMs, report[0].plan.worstMs);
@@ -170,7 +176,10 @@ TEST(CalibrationSweep, EveryLightTypeIsSweptAndJoined) {
   ASSERT_EQ(report.size(), 3u);
   for (const planning::ReportRow& r : report) {
     EXPECT_TRUE(r.planError.empty()) << r.scene << ": " << r.planError;
-    EXPECT_LE(r.plan.worstRmse, r.bound) << r.scene;
+    EXPECT_LE(test::validateWrittenPlan(context(), r.planText, r.scene, request.screen, request.map, request.samples)
+                  .rmse,
+              r.bound)
+        << r.scene;
     EXPECT_EQ(r.everything.variant.empty(), r.scene == "point_room") << r.scene;
   }
   const std::string table = planning::formatReport(report, data, "test");

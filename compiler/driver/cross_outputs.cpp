@@ -1,5 +1,5 @@
 // HLSL / MSL outputs (cross_outputs.h).
-#include "emit/cross_outputs.h"
+#include "driver/cross_outputs.h"
 
 #include <set>
 
