@@ -1,0 +1,37 @@
+// Statistics of a set of timed runs: what validate, the sweep and the planner show beside a time
+// (docs/runtime.md "Timing statistics"). Pure arithmetic on the samples, no clock.
+#pragma once
+
+#include <vector>
+
+namespace shadowc::rt {
+
+// The 1-based ranks j <= k of the order statistics that bracket the median, and the probability
+// that the population median lies in [X_(j), X_(k)].
+struct MedianRanks {
+  int low = 0, high = 0;
+  double coverage = 0;
+};
+
+// Distribution-free interval of the median from order statistics: for n samples of a continuous
+// distribution the count B of samples below the median is Binomial(n, 1/2), so
+//   P(X_(j) <= median <= X_(n+1-j)) = 1 - 2 * P(B <= j - 1) = 1 - 2 * sum_{i<j} C(n, i) / 2^n.
+// j is the largest rank with coverage >= `level`. When even j = 1 falls short (n < 6 for 0.95) the
+// interval is [X_(1), X_(n)] and `coverage` says what it reaches (1 - 2^(1-n)). n = 0 gives {0, 0, 0}.
+MedianRanks medianRanks(int n, double level = 0.95);
+
+struct TimingStats {
+  int n = 0;
+  double minMs = 0, medianMs = 0, p90Ms = 0, maxMs = 0;
+  double meanMs = 0, stddevMs = 0;   // sample standard deviation (n - 1); 0 for n < 2
+  double cv = 0;                     // stddev / mean; 0 when the mean is 0
+  double ciLowMs = 0, ciHighMs = 0;  // the median's interval (medianRanks)
+  double ciCoverage = 0;             // what that interval covers: >= 0.95, or less for n < 6
+  // Half the interval's width relative to the median: what `--runs auto` drives down.
+  double relativeHalfWidth() const;
+};
+
+// p90 is the nearest-rank percentile: the ceil(0.9 n)-th smallest sample. All zero when empty.
+TimingStats timingStats(std::vector<double> samplesMs);
+
+}  // namespace shadowc::rt
