@@ -1,4 +1,4 @@
-// Statistics of a set of timed runs: what validate, the sweep and the planner show beside a time
+// Statistics of a set of timed runs: min, median, p90 and the median's confidence interval
 // (docs/runtime.md "Timing statistics"). Pure arithmetic on the samples, no clock.
 #pragma once
 
@@ -27,7 +27,7 @@ struct TimingStats {
   double cv = 0;                     // stddev / mean; 0 when the mean is 0
   double ciLowMs = 0, ciHighMs = 0;  // the median's interval (medianRanks)
   double ciCoverage = 0;             // what that interval covers: >= 0.95, or less for n < 6
-  // Half the interval's width relative to the median: what `--runs auto` drives down.
+  // Half the interval's width relative to the median: the precision a time was measured to.
   double relativeHalfWidth() const;
 };
 
