@@ -1,6 +1,7 @@
 // `shadowc validate FILTER.shadow --scene NAME|FILE`: compile, run on the Vulkan device with
 // per-pass GPU timing, compare against the Embree ground truth. See docs/cli.md.
 #include "cli/commands.h"
+#include "cli/runs_option.h"
 #include "cli/validation_run.h"
 
 namespace shadowc::cli {
@@ -20,7 +21,7 @@ CommandRunner registerValidate(CLI::App& app) {
   sub->add_option("--images", o->imagesDir, "Write result/reference/error/comparison PNGs to this directory");
   sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");
   sub->add_flag("--validate", o->validation, "Enable the Khronos validation layer; any message fails the run");
-  sub->add_option("--runs", o->runs, "Timed runs (the median is reported)")->capture_default_str();
+  addRunsOption(sub, o->runs, "Timed runs (the median and its interval are reported)");
   sub->add_option("--warmup", o->warmup, "Untimed warm-up runs (lavapipe JIT-compiles on first use)")
       ->capture_default_str();
   sub->add_option("--pass-form", o->passForm,

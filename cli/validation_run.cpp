@@ -13,6 +13,7 @@
 #include "driver/driver.h"
 #include "manifest/compiled_passes.h"
 #include "planning/scene_analysis.h"
+#include "runtime/executor/busy_machine.h"
 #include "runtime/harness/scene_run.h"
 #include "runtime/images/atomic_file.h"
 #include "runtime/images/png_image.h"
@@ -89,7 +90,7 @@ std::optional<CapReport> capReport(const Manifest& manifest, const rt::PreparedS
 }  // namespace
 
 int runValidation(const ValidationOptions& o) {
-  if (o.size == 0 || o.map == 0 || o.samples < 1 || o.runs < 1 || o.warmup < 0)
+  if (o.size == 0 || o.map == 0 || o.samples < 1 || !o.runs.any() || o.warmup < 0)
     throw std::invalid_argument("--screen, --map, --samples and --runs must be positive, --warmup >= 0");
 
   // 1. The passes to run.
@@ -141,7 +142,8 @@ int runValidation(const ValidationOptions& o) {
   const rt::Scene& scene = prepared->scene;
 
   // 3. Passes through the run harness: timed runs, metrics against the reference.
-  progress(fmt::format("running {} passes ({} warm-up + {} timed runs) on {}", manifest.passes.size(), o.warmup, o.runs,
+  progress(fmt::format("running {} passes ({} warm-up + {} timed runs) on {}", manifest.passes.size(), o.warmup,
+                       rt::toString(o.runs),
                        ctx.deviceName())
                .c_str());
   rt::RunOptions run;
@@ -162,6 +164,10 @@ int runValidation(const ValidationOptions& o) {
   fmt::print("timing   median of {} runs after {} warm-up, {}\n", timing.runs, timing.warmup, rt::clockSummary(timing));
   for (const auto& p : timing.passes) fmt::print("  {:<16} {:<10} {:9.3f} ms\n", p.name, p.kind, p.medianMs);
   fmt::print("  {:<16} {:<10} {:9.3f} ms\n", "total", "", timing.totalMs);
+  fmt::print("  {}{}\n", rt::statsSummary(timing.stats),
+             timing.stoppedAtCap ? fmt::format(", stopped at the {:g} s cap", o.runs.capMs / 1000) : "");
+  if (const std::string busy = rt::busyWarning(timing.stats, timing.otherCpuShare); !busy.empty())
+    fmt::print(stderr, "shadowc: warning: {}\n", busy);
   if (!measured.outputs.forms.empty()) fmt::print("  {}\n", rt::describeChoices(measured.outputs.forms));
   fmt::print("error    over {} geometry pixels\n", metrics.compared);
   fmt::print("  rmse {:.5f}  mae {:.5f}  max {:.5f}  p99 {:.5f}\n", metrics.rmse, metrics.mae, metrics.maxAbsError,
@@ -195,6 +201,9 @@ int runValidation(const ValidationOptions& o) {
     for (const auto& p : timing.passes)
       passes.push_back({{"name", p.name}, {"kind", p.kind}, {"median_ms", p.medianMs}, {"min_ms", p.minMs}});
     t["total_ms"] = timing.totalMs;
+    t["total"] = rt::toJson(timing.stats);
+    if (timing.otherCpuShare) t["other_cpu_share"] = *timing.otherCpuShare;
+    t["busy_warning"] = rt::busyWarning(timing.stats, timing.otherCpuShare);
     t["host_total_ms"] = rt::median(timing.runHostMs);
     if (!measured.outputs.forms.empty()) {
       auto& forms = t["pass_forms"] = nlohmann::ordered_json::array();

@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <string>
 
+#include "runtime/executor/run_timing.h"
+
 namespace shadowc::cli {
 
 struct ValidationOptions {
@@ -20,7 +22,8 @@ struct ValidationOptions {
   std::string imagesDir;  // empty = none
   std::string device;     // --device
   bool validation = false;
-  int runs = 10, warmup = 3;
+  rt::RunCount runs = 10;
+  int warmup = 3;
   bool useCache = true;  // reference cache
   std::string passForm;  // --pass-form: auto, or a form name (serial, parallel); "" = SHADOWC_PASS_FORM or auto
 };

@@ -15,7 +15,10 @@ std::string cacheKey(const KeyInputs& in) {
   j["screen"] = in.screen;
   j["map"] = in.map;
   j["reference_samples"] = in.referenceSamples;
-  j["runs"] = in.runs;
+  if (in.runs.automatic)  // a fixed count keeps the key it always had
+    j["runs"] = "auto";
+  else
+    j["runs"] = in.runs.runs;
   j["warmup"] = in.warmup;
   j["device"] = in.device;
   const std::string h = contentHash({EmittedFile{"sweep-row", j.dump()}});

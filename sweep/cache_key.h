@@ -11,6 +11,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "runtime/executor/run_timing.h"
+
 namespace shadowc::sweep {
 
 struct KeyInputs {
@@ -19,7 +21,9 @@ struct KeyInputs {
   std::string emitted;  // the compiled variant's manifest content hash
   std::string sceneHash;
   uint32_t screen = 0, map = 0;
-  int referenceSamples = 0, runs = 0, warmup = 0;
+  int referenceSamples = 0;
+  rt::RunCount runs;
+  int warmup = 0;
   std::string device;
 };
 

@@ -4,32 +4,57 @@
 
 namespace shadowc::sweep {
 
+double timeLowMs(const Row& row) { return row.total.n > 0 ? row.total.ciLowMs : row.totalMs; }
+double timeHighMs(const Row& row) { return row.total.n > 0 ? row.total.ciHighMs : row.totalMs; }
+
 bool dominates(const Row& a, const Row& b) {
-  return a.totalMs <= b.totalMs && a.metrics.rmse <= b.metrics.rmse &&
-         (a.totalMs < b.totalMs || a.metrics.rmse < b.metrics.rmse);
+  const double aHigh = timeHighMs(a), bLow = timeLowMs(b);
+  return aHigh <= bLow && a.metrics.rmse <= b.metrics.rmse && (aHigh < bLow || a.metrics.rmse < b.metrics.rmse);
+}
+
+bool mayDominate(const Row& a, const Row& b) {
+  // The most favourable times for a: its lowest against b's highest.
+  const double aLow = timeLowMs(a), bHigh = timeHighMs(b);
+  return aLow <= bHigh && a.metrics.rmse <= b.metrics.rmse && (aLow < bHigh || a.metrics.rmse < b.metrics.rmse);
 }
 
 bool eligible(const Row& row) { return row.metrics.nonFinite == 0 && row.metrics.compared > 0; }
 
-std::map<size_t, std::vector<size_t>> frontiers(const std::vector<Row>& rows) {
+std::vector<FrontierMark> frontierMarks(const std::vector<Row>& rows) {
   std::map<size_t, std::vector<size_t>> byCase;
-  for (size_t i = 0; i < rows.size(); ++i) byCase[rows[i].caseIndex].push_back(i);
-  std::map<size_t, std::vector<size_t>> out;
-  for (auto& [c, members] : byCase) {
-    std::vector<size_t>& f = out[c];
-    // Quadratic, and fine: a case has at most a few thousand rows.
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (eligible(rows[i])) byCase[rows[i].caseIndex].push_back(i);
+  std::vector<FrontierMark> marks(rows.size());
+  // Quadratic, and fine: a case has at most a few thousand rows.
+  for (const auto& [c, members] : byCase) {
     for (size_t i : members) {
-      if (!eligible(rows[i])) continue;
-      const bool beaten = std::any_of(members.begin(), members.end(), [&](size_t k) {
-        return k != i && eligible(rows[k]) && dominates(rows[k], rows[i]);
-      });
-      if (!beaten) f.push_back(i);
+      const bool beaten =
+          std::any_of(members.begin(), members.end(), [&](size_t k) { return k != i && dominates(rows[k], rows[i]); });
+      marks[i].membership = beaten ? Membership::Off : Membership::On;
     }
+    for (size_t i : members) {
+      if (marks[i].membership == Membership::Off) continue;
+      for (size_t k : members)
+        if (k != i && marks[k].membership != Membership::Off && mayDominate(rows[k], rows[i]))
+          marks[i].tiedWith.push_back(k);
+      if (!marks[i].tiedWith.empty()) marks[i].membership = Membership::Tied;
+    }
+  }
+  return marks;
+}
+
+std::map<size_t, std::vector<size_t>> frontiers(const std::vector<Row>& rows) {
+  const std::vector<FrontierMark> marks = frontierMarks(rows);
+  std::map<size_t, std::vector<size_t>> out;
+  for (size_t i = 0; i < rows.size(); ++i)
+    out[rows[i].caseIndex];  // every case with rows has a frontier, empty when none is eligible
+  for (size_t i = 0; i < rows.size(); ++i)
+    if (marks[i].membership != Membership::Off) out[rows[i].caseIndex].push_back(i);
+  for (auto& [c, f] : out)
     std::stable_sort(f.begin(), f.end(), [&](size_t a, size_t b) {
       if (rows[a].totalMs != rows[b].totalMs) return rows[a].totalMs < rows[b].totalMs;
       return rows[a].metrics.rmse < rows[b].metrics.rmse;
     });
-  }
   return out;
 }
 

@@ -1,6 +1,11 @@
 // The Pareto frontier of time vs error per case: the rows no other row of the same case beats
 // on both total frame time and RMSE. A row with non-finite output pixels is never on it (its
 // RMSE counts only the finite pixels, so it would look better than it is).
+//
+// A time is an interval, the 95% interval of its median (timing_stats.h), so one row beats
+// another on time only when its interval lies wholly below; rows whose intervals overlap are
+// tied on time (docs/sweep.md "Ties"). A row with no interval (n = 0: written by hand, or a
+// result from before intervals) is its median alone, which gives the classic frontier.
 #pragma once
 
 #include <cstddef>
@@ -11,12 +16,31 @@
 
 namespace shadowc::sweep {
 
-// a dominates b: no worse on time and RMSE, better on at least one.
+// The interval a row's time is known to: [ci low, ci high], or [total, total] without one.
+double timeLowMs(const Row& row);
+double timeHighMs(const Row& row);
+
+// a dominates b for certain: a's whole interval at or below b's, RMSE no worse, and better on
+// one of the two. With point times this is "no worse on both, better on one".
 bool dominates(const Row& a, const Row& b);
+// a may dominate b: some times inside both intervals make a dominate b.
+bool mayDominate(const Row& a, const Row& b);
 bool eligible(const Row& row);
 
-// Case index -> indices into `rows` of that case's frontier, by increasing time (ties: RMSE,
-// then row order). Equal points are both kept (neither dominates the other).
+// A row's frontier membership. On: no row may dominate it. Tied: none dominates it for certain,
+// but one whose interval overlaps may (`tiedWith`: those frontier rows, by row index). Off:
+// dominated for certain. Two sweeps of the same rows agree on a row unless one says On and the
+// other Off.
+enum class Membership { On, Tied, Off };
+struct FrontierMark {
+  Membership membership = Membership::Off;
+  std::vector<size_t> tiedWith;
+};
+// One mark per row; an ineligible row is Off.
+std::vector<FrontierMark> frontierMarks(const std::vector<Row>& rows);
+
+// Case index -> indices into `rows` of that case's frontier (On or Tied), by increasing time
+// (ties: RMSE, then row order). Equal points are both kept (neither dominates the other).
 std::map<size_t, std::vector<size_t>> frontiers(const std::vector<Row>& rows);
 
 }  // namespace shadowc::sweep

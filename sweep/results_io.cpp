@@ -70,8 +70,10 @@ ordered_json rowToJson(const Row& r) {
   j["warmup"] = r.warmup;
   j["content_hash"] = r.contentHash;
   j["total_ms"] = r.totalMs;
+  j["total"] = rt::toJson(r.total);
   j["clock"] = r.clock;
   j["rejected_runs"] = r.rejectedRuns;
+  if (!r.busyWarning.empty()) j["busy_warning"] = r.busyWarning;
   ordered_json passes = ordered_json::array();
   for (const auto& p : r.passes) passes.push_back({{"name", p.name}, {"kind", p.kind}, {"median_ms", p.medianMs}});
   j["passes"] = std::move(passes);
@@ -104,9 +106,12 @@ Row rowFromJson(const json& j) {
     r.warmup = j.at("warmup").get<int>();
     r.contentHash = j.at("content_hash").get<std::string>();
     r.totalMs = j.at("total_ms").get<double>();
+    // Rows from before intervals have none: their time is the median alone (pareto.h).
+    if (j.contains("total")) r.total = rt::timingStatsFromJson(j.at("total"));
     // Rows written before the host-clock check carry neither: they were timed on device timestamps.
     r.clock = j.value("clock", std::string("device timestamps"));
     r.rejectedRuns = j.value("rejected_runs", 0);
+    r.busyWarning = j.value("busy_warning", std::string());
     for (const auto& p : j.at("passes"))
       r.passes.push_back(
           {p.at("name").get<std::string>(), p.at("kind").get<std::string>(), p.at("median_ms").get<double>()});
@@ -192,13 +197,11 @@ Results parseResultsJson(const std::string& text, const std::string& label) {
 Results readResultsJson(const std::filesystem::path& file) { return parseResultsJson(readFile(file), file.string()); }
 
 std::string resultsCsv(const Results& res) {
-  const auto front = frontiers(res.rows);
-  std::vector<bool> onFrontier(res.rows.size(), false);
-  for (const auto& [c, members] : front)
-    for (size_t i : members) onFrontier[i] = true;
+  const std::vector<FrontierMark> marks = frontierMarks(res.rows);
   std::string out =
       "case,scene,screen,map,variant,base,shader,params,total_ms,rmse,mae,max_abs_error,p99_abs_error,light_bleeding,"
-      "over_darkening,non_finite,frontier,passes_ms,content_hash,key,spec,specialized_over_generic,clock,rejected_runs\n";
+      "over_darkening,non_finite,frontier,passes_ms,content_hash,key,spec,specialized_over_generic,clock,rejected_runs,"
+      "runs,total_min_ms,total_p90_ms,total_ci_low_ms,total_ci_high_ms,total_cv,frontier_tie,tied_with\n";
   const std::vector<ShaderPair> pairs = shaderPairs(res.rows);
   for (size_t i = 0; i < res.rows.size(); ++i) {
     const Row& r = res.rows[i];
@@ -207,13 +210,17 @@ std::string resultsCsv(const Results& res) {
     for (const auto& p : r.passes) passes += fmt::format("{}{}={:.4f}", passes.empty() ? "" : ";", p.name, p.medianMs);
     const rt::Metrics& m = r.metrics;
     const std::optional<double> ratio = pairedRatio(pairs, i);
+    const FrontierMark& mark = marks[i];
+    std::string tied;
+    for (size_t k : mark.tiedWith) tied += (tied.empty() ? "" : ";") + res.rows[k].variant;
     out +=
-        fmt::format("{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{},{},{},{}\n",
+        fmt::format("{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{},{},{},{},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{},{}\n",
                     csvField(r.caseLabel), csvField(r.scene), r.screen, r.map, csvField(r.variant), csvField(r.base),
                     r.shader, csvField(params), r.totalMs, m.rmse, m.mae, m.maxAbsError, m.p99AbsError, m.lightBleeding,
-                    m.overDarkening, m.nonFinite, onFrontier[i] ? 1 : 0, csvField(passes), r.contentHash, r.key,
+                    m.overDarkening, m.nonFinite, mark.membership != Membership::Off ? 1 : 0, csvField(passes), r.contentHash, r.key,
                     csvField(r.spec.dump()), ratio ? fmt::format("{:.4f}", *ratio) : "", csvField(r.clock),
-                    r.rejectedRuns);
+                    r.rejectedRuns, r.runs, r.total.minMs, r.total.p90Ms, timeLowMs(r), timeHighMs(r), r.total.cv,
+                    mark.membership == Membership::Tied ? 1 : 0, csvField(tied));
   }
   return out;
 }

@@ -12,7 +12,7 @@
 
 namespace shadowc::sweep {
 
-inline constexpr int kResultsVersion = 2;  // 2: rows carry normalized_text
+inline constexpr int kResultsVersion = 3;  // 2: rows carry normalized_text; 3: and their total's interval
 
 nlohmann::ordered_json rowToJson(const Row& row);
 Row rowFromJson(const nlohmann::json& j);  // throws std::runtime_error naming the missing field

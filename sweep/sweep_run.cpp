@@ -14,6 +14,7 @@
 #include <tuple>
 
 #include "driver/driver.h"
+#include "runtime/executor/busy_machine.h"
 #include "runtime/harness/scene_run.h"
 #include "runtime/images/png_image.h"
 #include "runtime/vulkan/vulkan_context.h"
@@ -146,6 +147,7 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
   }
   std::vector<Job> pending;
   std::vector<Row> rows;
+  std::vector<std::string> busyRows;  // "variant on case" of each row timed on a busy machine
   for (const Case& c : e.cases)
     for (const Variant& v : e.variants) {
       if (!o.shard.contains(c.index * e.variants.size() + v.index) || !checked[v.index].spec ||
@@ -237,6 +239,10 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         row.passes.clear();
         for (const auto& p : run.outputs.timing->passes) row.passes.push_back({p.name, p.kind, p.medianMs});
         row.totalMs = run.outputs.timing->totalMs;
+        row.total = run.outputs.timing->stats;
+        row.runs = run.outputs.timing->runs;
+        row.busyWarning = rt::busyWarning(row.total, run.outputs.timing->otherCpuShare);
+        if (!row.busyWarning.empty()) busyRows.push_back(fmt::format("{} on {}", v.label, c.label));
         row.clock = rt::toString(run.outputs.timing->clock);
         row.rejectedRuns = int(run.outputs.timing->rejected.size());
         row.metrics = run.metrics;
@@ -262,7 +268,6 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
       row.screen = c.screen;
       row.map = c.map;
       row.referenceSamples = spec.referenceSamples;
-      row.runs = spec.runs;
       row.warmup = spec.warmup;
       row.spec = checked[v.index].specJson;
       row.filterText = v.text;
@@ -284,6 +289,11 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
     }
     progress.finish();
     outcome.validationMessages = ctx.validationMessageCount();
+    if (!busyRows.empty())
+      fmt::print(log,
+                 "sweep: warning: the machine was busy while timing {} of {} rows (first: {}); their intervals are "
+                 "wider and overlapping ones are tied on the frontier (docs/sweep.md \"Ties\")\n",
+                 busyRows.size(), res.stats.ran, busyRows.front());
   }
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) {
     return std::tie(a.caseIndex, a.variantIndex) < std::tie(b.caseIndex, b.variantIndex);

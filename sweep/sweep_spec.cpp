@@ -251,7 +251,14 @@ SweepSpec parseSweepSpec(const std::string& jsonText, const std::string& label, 
   if (j.contains("map")) s.maps = r.sizes(j["map"], "map");
   if (j.contains("reference_samples"))
     s.referenceSamples = r.integer(j["reference_samples"], "reference_samples", 1, 256);
-  if (j.contains("runs")) s.runs = r.integer(j["runs"], "runs", 1, 1000);
+  if (j.contains("runs")) {
+    if (j["runs"].is_string() && j["runs"].get<std::string>() == "auto")
+      s.runs = rt::RunCount::untilPrecise();
+    else if (j["runs"].is_string())
+      r.fail("runs", "expected a whole number or \"auto\"");
+    else
+      s.runs = r.integer(j["runs"], "runs", 1, 1000);
+  }
   if (j.contains("warmup")) s.warmup = r.integer(j["warmup"], "warmup", 0, 1000);
   if (j.contains("shaders")) {
     const ordered_json& sh = j["shaders"];

@@ -12,6 +12,8 @@
 #include <utility>
 #include <vector>
 
+#include "runtime/executor/run_timing.h"
+
 namespace shadowc::sweep {
 
 struct SweepSpecError : std::runtime_error {
@@ -59,7 +61,8 @@ struct SweepSpec {
   std::vector<uint32_t> screens{256};
   std::vector<uint32_t> maps{1024};
   int referenceSamples = 16;
-  int runs = 5, warmup = 2;
+  rt::RunCount runs = 5;  // a count, or "auto" (run_timing.h RunCount)
+  int warmup = 2;
   std::vector<ShaderKind> shaders{ShaderKind::Specialized};
 };
 

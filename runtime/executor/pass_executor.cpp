@@ -8,6 +8,7 @@
 #include <map>
 #include <tuple>
 
+#include "runtime/executor/busy_machine.h"
 #include "runtime/executor/spirv_reflect.h"
 #include "runtime/vulkan/vulkan_context.h"
 #include "runtime/vulkan/vulkan_error.h"
@@ -607,7 +608,7 @@ class ExecutorRuns final : public TimedDevice {
 
 }  // namespace
 
-TimingResult PassExecutor::time(int warmup, int runs, ClockChoice choice) {
+TimingResult PassExecutor::time(int warmup, const RunCount& runs, ClockChoice choice) {
   const bool cpu = impl_->ctx.properties().deviceType == VK_PHYSICAL_DEVICE_TYPE_CPU;
   ExecutorRuns device(impl_->ctx, impl_->queries, impl_->cmd, impl_->passCmds, impl_->emptyCmd);
   std::vector<std::string> names, kinds;
@@ -616,7 +617,11 @@ TimingResult PassExecutor::time(int warmup, int runs, ClockChoice choice) {
     kinds.push_back(p.kind);
   }
   try {
-    return timeRuns(device, resolveClock(choice, cpu), impl_->hostClock, warmup, runs, names, kinds);
+    const std::optional<CpuSample> before = sampleCpu();
+    TimingResult result = timeRuns(device, resolveClock(choice, cpu), impl_->hostClock, warmup, runs, names, kinds);
+    const std::optional<CpuSample> after = sampleCpu();
+    if (before && after) result.otherCpuShare = otherCpuShare(*before, *after);
+    return result;
   } catch (const VulkanError&) {
     throw;
   } catch (const std::runtime_error& e) {

@@ -56,7 +56,7 @@ class PassExecutor {
   // `warmup` untimed runs (lavapipe JIT-compiles on the first dispatch), then `runs` timed runs on
   // the chosen clock (Auto: the host clock on a CPU device), every reading checked against the
   // host's clock (run_timing.h). An ExecutorError when every run was rejected.
-  TimingResult time(int warmup, int runs, ClockChoice clock = ClockChoice::Auto);
+  TimingResult time(int warmup, const RunCount& runs, ClockChoice clock = ClockChoice::Auto);
   // The host clock timed runs read (default steadyHostClock()).
   void setHostClock(HostClock clock);
   HostImage download(const std::string& image, uint32_t level = 0, uint32_t layer = 0);

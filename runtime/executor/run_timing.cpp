@@ -3,6 +3,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <stdexcept>
@@ -100,23 +101,56 @@ double submitOverhead(TimedDevice& device, const HostClock& now) {
 
 }  // namespace
 
-TimingResult timeRuns(TimedDevice& device, TimingClock clock, const HostClock& now, int warmup, int runs,
+RunCount parseRunCount(std::string_view text, std::string_view option) {
+  if (text == "auto") return RunCount::untilPrecise();
+  int n = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), n);
+  if (ec != std::errc() || end != text.data() + text.size() || n < 1 || n > 100000)
+    throw std::invalid_argument(fmt::format("{} must be a positive count or 'auto', not '{}'", option, text));
+  return RunCount(n);
+}
+
+std::string toString(const RunCount& count) {
+  return count.automatic ? std::string("auto") : std::to_string(count.runs);
+}
+
+void summarize(TimingResult& result) { result.stats = timingStats(result.runTotalsMs); }
+
+namespace {
+
+// Whether another timed run is wanted, given the accepted totals so far and the host time spent.
+bool wantsMore(const RunCount& count, const std::vector<double>& totals, double spentMs, bool& stoppedAtCap) {
+  const int n = static_cast<int>(totals.size());
+  if (!count.automatic) return n < std::max(1, count.runs);
+  if (n < count.minRuns) return true;  // no interval yet; the cap bounds only what comes after
+  if (n >= count.maxRuns) return false;
+  if (timingStats(totals).relativeHalfWidth() <= count.targetHalfWidth) return false;
+  stoppedAtCap = spentMs >= count.capMs;
+  return !stoppedAtCap;
+}
+
+}  // namespace
+
+TimingResult timeRuns(TimedDevice& device, TimingClock clock, const HostClock& now, int warmup, const RunCount& runs,
                       const std::vector<std::string>& names, const std::vector<std::string>& kinds) {
   TimingResult result;
   result.clock = clock;
   result.warmup = std::max(0, warmup);
-  const int wanted = std::max(1, runs);
   for (int i = 0; i < result.warmup; ++i) device.submitRun();
   const size_t n = device.passCount();
+  const int most = runs.automatic ? std::max(runs.minRuns, runs.maxRuns) : std::max(1, runs.runs);
   if (n == 0) {  // nothing to time: the runs still happen, no reading exists
-    for (int i = 0; i < wanted; ++i) device.submitRun();
-    result.runs = wanted;
+    const int count = runs.automatic ? runs.minRuns : most;
+    for (int i = 0; i < count; ++i) device.submitRun();
+    result.runs = count;
     return result;
   }
   result.submitOverheadMs = submitOverhead(device, now);
   const Plausibility bounds{result.submitOverheadMs, device.timestampTickMs()};
   std::vector<std::vector<double>> perPass(n);
-  for (int attempt = 0; attempt < 2 * wanted + 2 && result.runs < wanted; ++attempt) {
+  const double start = now();
+  for (int attempt = 0; attempt < 2 * most + 2; ++attempt) {
+    if (!wantsMore(runs, result.runTotalsMs, now() - start, result.stoppedAtCap)) break;
     const RunReading r = measureRun(device, clock, now);
     const Verdict verdict = judge(r, clock, bounds);
     if (verdict != Verdict::Plausible) {
@@ -139,11 +173,17 @@ TimingResult timeRuns(TimedDevice& device, TimingClock clock, const HostClock& n
     result.passes.push_back({i < names.size() ? names[i] : "", i < kinds.size() ? kinds[i] : "", median(perPass[i]),
                              *std::min_element(perPass[i].begin(), perPass[i].end())});
   result.totalMs = median(result.runTotalsMs);
+  summarize(result);
   return result;
 }
 
 std::string clockSummary(const TimingResult& timing) {
   return fmt::format("{}, {} rejected", toString(timing.clock), timing.rejected.size());
+}
+
+std::string statsSummary(const TimingStats& s) {
+  return fmt::format("median {:.3f} ms [{:.3f}, {:.3f}] ({:.0f}%), min {:.3f}, p90 {:.3f}, cv {:.0f}%", s.medianMs,
+                     s.ciLowMs, s.ciHighMs, 100 * s.ciCoverage, s.minMs, s.p90Ms, 100 * s.cv);
 }
 
 }  // namespace shadowc::rt

@@ -4,9 +4,12 @@
 #pragma once
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "runtime/executor/timing_stats.h"
 
 namespace shadowc::rt {
 
@@ -58,6 +61,31 @@ struct RejectedRun {
   Verdict verdict = Verdict::Plausible;
 };
 
+// How many timed runs: a fixed count, or "auto": at least `minRuns`, then more until the median's
+// 95% interval is within `targetHalfWidth` of the median, or the runs have taken `capMs` on the
+// host clock, or `maxRuns` were accepted (docs/runtime.md "Timing statistics"). Implicit from an
+// int, which is a fixed count.
+struct RunCount {
+  int runs = 0;  // the fixed count; unused when automatic
+  bool automatic = false;
+  int minRuns = 6;  // the fewest with a 95% interval of the median from order statistics (timing_stats.h)
+  int maxRuns = 200;
+  double targetHalfWidth = 0.05;
+  double capMs = 3000;
+  RunCount() = default;
+  RunCount(int fixed) : runs(fixed) {}  // NOLINT(google-explicit-constructor): a count is a count
+  static RunCount untilPrecise() {
+    RunCount c;
+    c.automatic = true;
+    return c;
+  }
+  bool any() const { return automatic || runs > 0; }
+};
+// "auto" or a positive count ("10"); anything else throws std::invalid_argument naming `option`.
+RunCount parseRunCount(std::string_view text, std::string_view option = "--runs");
+// "auto" or the count: what a command line, a plan's comment or a sweep key says.
+std::string toString(const RunCount& count);
+
 // Every number here is over the accepted runs only; a rejected run is counted, never used.
 struct TimingResult {
   std::vector<PassTiming> passes;   // manifest order
@@ -68,7 +96,13 @@ struct TimingResult {
   TimingClock clock = TimingClock::Device;
   std::vector<RejectedRun> rejected;  // the implausible readings, in run order
   double submitOverheadMs = 0;        // host time of an empty submission (median), the lower bound's allowance
+  TimingStats stats;                  // of runTotalsMs: min, median, p90, the median's interval, spread
+  bool stoppedAtCap = false;          // auto run count: the time cap ended the runs before the interval was narrow
+  std::optional<double> otherCpuShare;  // other processes' share of the CPUs during the runs (busy_machine.h)
 };
+
+// Fills `result.stats` from its runTotalsMs (what timeRuns and timeInterleaved do last).
+void summarize(TimingResult& result);
 
 // The timings' median: the middle value, or the mean of the middle two; 0 when empty. The
 // benchmarks use this one too.
@@ -91,12 +125,15 @@ class TimedDevice {
 RunReading measureRun(TimedDevice& device, TimingClock clock, const HostClock& now);
 
 // `warmup` untimed runs, the empty-submission overhead (median of 5), then timed runs until
-// `runs` are accepted or 2·runs + 2 were tried. Throws std::runtime_error when none was accepted:
-// a result with no measurement in it is not a time. `names` and `kinds` label the passes.
-TimingResult timeRuns(TimedDevice& device, TimingClock clock, const HostClock& now, int warmup, int runs,
+// `runs` are accepted or 2·runs + 2 were tried (auto: see RunCount, with the cap bounding the
+// attempts). Throws std::runtime_error when none was accepted: a result with no measurement in
+// it is not a time. `names` and `kinds` label the passes.
+TimingResult timeRuns(TimedDevice& device, TimingClock clock, const HostClock& now, int warmup, const RunCount& runs,
                       const std::vector<std::string>& names, const std::vector<std::string>& kinds);
 
 // "host clock, 0 rejected": the words validate and the benchmarks print after the run count.
 std::string clockSummary(const TimingResult& timing);
+// "median 1.234 ms [1.200, 1.260] (95%), min 1.190, p90 1.300, cv 3%": one line of a total's statistics.
+std::string statsSummary(const TimingStats& stats);
 
 }  // namespace shadowc::rt

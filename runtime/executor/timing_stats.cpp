@@ -55,4 +55,26 @@ TimingStats timingStats(std::vector<double> v) {
   return s;
 }
 
+nlohmann::ordered_json toJson(const TimingStats& s) {
+  return {{"n", s.n},           {"min_ms", s.minMs},       {"median_ms", s.medianMs},   {"p90_ms", s.p90Ms},
+          {"max_ms", s.maxMs},  {"mean_ms", s.meanMs},     {"stddev_ms", s.stddevMs},   {"cv", s.cv},
+          {"ci_low_ms", s.ciLowMs}, {"ci_high_ms", s.ciHighMs}, {"ci_coverage", s.ciCoverage}};
+}
+
+TimingStats timingStatsFromJson(const nlohmann::json& j) {
+  TimingStats s;
+  s.n = j.at("n").get<int>();
+  s.minMs = j.at("min_ms").get<double>();
+  s.medianMs = j.at("median_ms").get<double>();
+  s.p90Ms = j.at("p90_ms").get<double>();
+  s.maxMs = j.at("max_ms").get<double>();
+  s.meanMs = j.at("mean_ms").get<double>();
+  s.stddevMs = j.at("stddev_ms").get<double>();
+  s.cv = j.at("cv").get<double>();
+  s.ciLowMs = j.at("ci_low_ms").get<double>();
+  s.ciHighMs = j.at("ci_high_ms").get<double>();
+  s.ciCoverage = j.at("ci_coverage").get<double>();
+  return s;
+}
+
 }  // namespace shadowc::rt

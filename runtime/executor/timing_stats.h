@@ -2,6 +2,7 @@
 // (docs/runtime.md "Timing statistics"). Pure arithmetic on the samples, no clock.
 #pragma once
 
+#include <nlohmann/json.hpp>
 #include <vector>
 
 namespace shadowc::rt {
@@ -33,5 +34,11 @@ struct TimingStats {
 
 // p90 is the nearest-rank percentile: the ceil(0.9 n)-th smallest sample. All zero when empty.
 TimingStats timingStats(std::vector<double> samplesMs);
+
+// {"n", "min_ms", "median_ms", "p90_ms", "max_ms", "mean_ms", "stddev_ms", "cv", "ci_low_ms",
+// "ci_high_ms", "ci_coverage"}: how validate's JSON and the sweep's results hold a time.
+nlohmann::ordered_json toJson(const TimingStats& stats);
+// The inverse; throws nlohmann::json::exception on a missing field.
+TimingStats timingStatsFromJson(const nlohmann::json& j);
 
 }  // namespace shadowc::rt

@@ -6,6 +6,8 @@
 #include <chrono>
 #include <memory>
 
+#include "runtime/executor/busy_machine.h"
+
 namespace shadowc::rt {
 namespace {
 
@@ -45,7 +47,7 @@ std::string setInputs(PassExecutor& ex, const CompiledPasses& passes, const RunI
 
 RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const RunInputs& inputs,
                      const RunOptions& options) {
-  if (options.warmup < 0 || options.runs < 0) throw ExecutorError("warm-up and timed run counts must be >= 0");
+  if (options.warmup < 0 || options.runs.runs < 0) throw ExecutorError("warm-up and timed run counts must be >= 0");
   RunOutputs out;
   const auto start = std::chrono::steady_clock::now();
   PassExecutor ex(ctx, passes, inputs.mapSize, inputs.width, inputs.height, options.passForm);
@@ -55,7 +57,7 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
   const std::string output = setInputs(ex, passes, inputs);
 
   // The last run leaves the outputs in place for the downloads.
-  if (options.runs > 0) {
+  if (options.runs.any()) {
     out.timing = ex.time(options.warmup, options.runs, options.clock);
   } else {
     for (int i = 0; i <= options.warmup; ++i) ex.run();
@@ -79,14 +81,17 @@ std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<
     for (int i = 0; i < warmup; ++i) e->run();
   // perRun[i][round] = that round's one-run timing of run i.
   std::vector<std::vector<TimingResult>> perRun(ex.size());
+  const std::optional<CpuSample> before = sampleCpu();
   for (int round = 0; round < rounds; ++round)
     for (size_t k = 0; k < ex.size(); ++k) {
       const size_t i = round % 2 ? ex.size() - 1 - k : k;
       perRun[i].push_back(ex[i]->time(0, 1, clock));
     }
+  const std::optional<CpuSample> after = sampleCpu();
   std::vector<TimingResult> out(ex.size());
   for (size_t i = 0; i < ex.size(); ++i) {
     TimingResult& t = out[i];
+    if (before && after) t.otherCpuShare = otherCpuShare(*before, *after);
     t.warmup = warmup;
     t.runs = rounds;
     t.clock = perRun[i].front().clock;
@@ -105,6 +110,7 @@ std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<
       const PassTiming& first = perRun[i].front().passes[p];
       t.passes.push_back({first.name, first.kind, median(ms), *std::min_element(ms.begin(), ms.end())});
     }
+    summarize(t);
   }
   return out;
 }

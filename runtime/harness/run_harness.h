@@ -33,7 +33,7 @@ struct RunInputs {
 
 struct RunOptions {
   int warmup = 0;                      // untimed runs first (lavapipe JIT-compiles on the first dispatch)
-  int runs = 0;                        // timed runs; 0 = one untimed run, no timing
+  RunCount runs;                       // timed runs (or auto); 0 = one untimed run, no timing
   ClockChoice clock = ClockChoice::Auto;  // Auto: the host clock on a CPU device (run_timing.h)
   std::vector<std::string> downloads;  // intermediate images to read back (level 0, layer 0)
   std::string passForm;                // the form of passes with several: "" = SHADOWC_PASS_FORM or auto (pass_forms.h)

@@ -259,7 +259,7 @@ TEST(CalibrationSweepCli, WritesTheSweepAndRefusesAMissingOne) {
   ASSERT_EQ(spec.scenes.size(), 1u);
   EXPECT_EQ(spec.scenes[0].scene, "two_planes");
   EXPECT_EQ(spec.screens, std::vector<uint32_t>{64});
-  EXPECT_EQ(spec.runs, 1);
+  EXPECT_EQ(spec.runs.runs, 1);
   const test::CliResult r = test::runShadowc("plan --calibrate '" + (dir / "m.json").string() + "' --from-sweep '" +
                                              (dir / "none").string() + "'");
   EXPECT_EQ(r.code, 1);

@@ -132,5 +132,80 @@ TEST(RunTiming, ACpuDeviceIsTimedOnTheHostClockUnlessAsked) {
   EXPECT_EQ(rt::resolveClock(rt::ClockChoice::Host, false), rt::TimingClock::Host);
 }
 
+// A device whose timestamps say the next planted total (split evenly over its two passes), each
+// run taking `hostMs` on the planted clock.
+struct VaryingDevice final : rt::TimedDevice {
+  double now = 1024, hostMs = 5;
+  std::deque<double> totals;
+  double last = 0;
+  size_t passCount() const override { return 2; }
+  void submitRun() override { now += hostMs; }
+  void submitPass(size_t) override { now += hostMs / 2; }
+  void submitEmpty() override { now += 0.125; }
+  rt::RunReading readTimestamps() override {
+    if (!totals.empty()) {
+      last = totals.front();
+      totals.pop_front();
+    }
+    return {{last / 2, last / 2}, last, 0};
+  }
+  double timestampTickMs() const override { return 1e-6; }
+  rt::HostClock clock() {
+    return [this] { return now; };
+  }
+};
+
+TEST(RunCount, AutoStopsAtTheFewestRunsWithAnIntervalWhenTheReadingsAgree) {
+  VaryingDevice d;
+  d.totals = {3.0};  // every run reads 3 ms: a zero-width interval as soon as there is one
+  const rt::TimingResult t =
+      rt::timeRuns(d, rt::TimingClock::Device, d.clock(), 0, rt::RunCount::untilPrecise(), kNames, kKinds);
+  EXPECT_EQ(t.runs, rt::RunCount::untilPrecise().minRuns);
+  EXPECT_EQ(t.stats.n, t.runs);
+  EXPECT_EQ(t.stats.relativeHalfWidth(), 0.0);
+  EXPECT_FALSE(t.stoppedAtCap);
+}
+
+TEST(RunCount, AutoRunsUntilTheIntervalIsNarrowAndStopsAtTheFirstRunThatMakesItSo) {
+  VaryingDevice d;
+  d.totals = {3.0, 4.5, 3.0, 4.5, 3.0, 4.5};  // a wide start, then 3 ms for ever
+  rt::RunCount count = rt::RunCount::untilPrecise();
+  const rt::TimingResult t = rt::timeRuns(d, rt::TimingClock::Device, d.clock(), 0, count, kNames, kKinds);
+  EXPECT_FALSE(t.stoppedAtCap);
+  EXPECT_LE(t.stats.relativeHalfWidth(), count.targetHalfWidth);
+  ASSERT_GT(t.runs, count.minRuns);
+  const std::vector<double> fewer(t.runTotalsMs.begin(), t.runTotalsMs.end() - 1);
+  EXPECT_GT(rt::timingStats(fewer).relativeHalfWidth(), count.targetHalfWidth) << "one run fewer was not enough";
+}
+
+TEST(RunCount, AutoStopsAtTheTimeCapWhenTheReadingsNeverAgree) {
+  VaryingDevice d;
+  for (int i = 0; i < 1000; ++i) d.totals.push_back(i % 2 ? 4.5 : 3.0);
+  rt::RunCount count = rt::RunCount::untilPrecise();
+  count.capMs = 100;  // each run takes 5 ms of host time: the cap is reached after 100 / 5 runs
+  const rt::TimingResult t = rt::timeRuns(d, rt::TimingClock::Device, d.clock(), 0, count, kNames, kKinds);
+  EXPECT_TRUE(t.stoppedAtCap);
+  EXPECT_EQ(t.runs, 20);
+  EXPECT_GT(t.stats.relativeHalfWidth(), count.targetHalfWidth);
+}
+
+TEST(RunCount, AFixedCountIgnoresTheInterval) {
+  VaryingDevice d;
+  for (int i = 0; i < 100; ++i) d.totals.push_back(i % 2 ? 4.5 : 3.0);
+  const rt::TimingResult t = rt::timeRuns(d, rt::TimingClock::Device, d.clock(), 0, 4, kNames, kKinds);
+  EXPECT_EQ(t.runs, 4);
+  EXPECT_FALSE(t.stoppedAtCap);
+  EXPECT_EQ(t.stats.n, 4);
+}
+
+TEST(RunCount, ParsesACountOrAutoAndRefusesAnythingElse) {
+  EXPECT_TRUE(rt::parseRunCount("auto").automatic);
+  EXPECT_EQ(rt::parseRunCount("7").runs, 7);
+  EXPECT_FALSE(rt::parseRunCount("7").automatic);
+  EXPECT_EQ(rt::toString(rt::parseRunCount("7")), "7");
+  EXPECT_EQ(rt::toString(rt::parseRunCount("auto")), "auto");
+  for (const char* bad : {"0", "-3", "5x", "", "Auto", "1e3"}) EXPECT_THROW(rt::parseRunCount(bad), std::invalid_argument) << bad;
+}
+
 }  // namespace
 }  // namespace shadowc::test

@@ -56,5 +56,49 @@ TEST(Pareto, NonFiniteOutputNeverOnTheFrontier) {
   EXPECT_EQ(names(rows, frontiers(rows).at(0)), std::vector<std::string>{"ok"});
 }
 
+Row timed(const std::string& name, double low, double ms, double high, double rmse) {
+  Row r = row(name, ms, rmse);
+  r.total.n = 10;
+  r.total.medianMs = ms;
+  r.total.ciLowMs = low;
+  r.total.ciHighMs = high;
+  return r;
+}
+
+TEST(ParetoTies, OverlappingIntervalsTieInsteadOfOrdering) {
+  // fast_coarse and slow_fine overlap on time: either may be the faster, and slow_fine is more
+  // accurate, so fast_coarse is tied with it. clear_loser's interval lies wholly above
+  // fast_coarse's and its error is worse: off for certain. cheapest lies wholly below all.
+  const std::vector<Row> rows = {timed("cheapest", 0.9, 1.0, 1.1, 0.2), timed("fast_coarse", 1.9, 2.0, 2.3, 0.1),
+                                 timed("slow_fine", 2.1, 2.2, 2.5, 0.05), timed("clear_loser", 2.4, 2.6, 2.8, 0.15)};
+  const std::vector<FrontierMark> m = frontierMarks(rows);
+  EXPECT_EQ(m[0].membership, Membership::On);
+  EXPECT_EQ(m[1].membership, Membership::Tied);
+  EXPECT_EQ(m[1].tiedWith, (std::vector<size_t>{2}));
+  EXPECT_EQ(m[2].membership, Membership::On);
+  EXPECT_EQ(m[3].membership, Membership::Off);
+  EXPECT_EQ(names(rows, frontiers(rows).at(0)), (std::vector<std::string>{"cheapest", "fast_coarse", "slow_fine"}));
+}
+
+TEST(ParetoTies, TheSameRowsWithPointTimesGiveTheClassicFrontier) {
+  // Sibling: without intervals fast_coarse is faster, so nothing ties and the marks are On/Off only.
+  std::vector<Row> rows = {row("cheapest", 1.0, 0.2), row("fast_coarse", 2.0, 0.1), row("slow_fine", 2.2, 0.05),
+                           row("clear_loser", 2.6, 0.15)};
+  const std::vector<FrontierMark> m = frontierMarks(rows);
+  for (size_t i = 0; i < 3; ++i) EXPECT_EQ(m[i].membership, Membership::On) << rows[i].variant;
+  EXPECT_EQ(m[3].membership, Membership::Off);
+  EXPECT_TRUE(m[1].tiedWith.empty());
+}
+
+TEST(ParetoTies, ARowCertainlyBeatenIsOffEvenWhenItOverlapsAnother) {
+  // slower overlaps fast's interval but is also wholly above cheap_exact, which is more accurate.
+  const std::vector<Row> rows = {timed("cheap_exact", 0.5, 0.6, 0.7, 0.01), timed("fast", 0.9, 1.0, 1.2, 0.1),
+                                 timed("slower", 1.1, 1.3, 1.5, 0.05)};
+  const std::vector<FrontierMark> m = frontierMarks(rows);
+  EXPECT_EQ(m[0].membership, Membership::On);
+  EXPECT_EQ(m[1].membership, Membership::Off);
+  EXPECT_EQ(m[2].membership, Membership::Off);
+}
+
 }  // namespace
 }  // namespace shadowc::sweep

@@ -34,7 +34,8 @@ TEST(SweepSpec, RangesListsAndGeometric) {
   EXPECT_EQ(s.params[2].values, (std::vector<std::string>{"0", "0.1", "0.2", "0.3"}));  // no drift
   EXPECT_EQ(s.params[3].values, (std::vector<std::string>{"int32", "0.5"}));
   EXPECT_EQ(s.screens, std::vector<uint32_t>{256});  // defaults
-  EXPECT_EQ(s.runs, 5);
+  EXPECT_EQ(s.runs.runs, 5);
+  EXPECT_FALSE(s.runs.automatic);
 }
 
 TEST(SweepSpec, ErrorsNameTheField) {

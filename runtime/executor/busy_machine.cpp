@@ -1,0 +1,73 @@
+#include "runtime/executor/busy_machine.h"
+
+#include <fmt/core.h>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <sstream>
+#include <vector>
+
+namespace shadowc::rt {
+
+namespace {
+
+std::string slurp(const char* path) {
+  std::ifstream in(path);
+  return in ? std::string(std::istreambuf_iterator<char>(in), {}) : std::string();
+}
+
+}  // namespace
+
+std::optional<CpuSample> parseCpuSample(std::string_view procStat, std::string_view procSelfStat) {
+  // "cpu  user nice system idle iowait irq softirq steal ..."
+  std::istringstream stat{std::string(procStat.substr(0, procStat.find('\n')))};
+  std::string label;
+  stat >> label;
+  if (label != "cpu") return std::nullopt;
+  std::vector<uint64_t> fields;
+  for (uint64_t v = 0; stat >> v;) fields.push_back(v);
+  if (fields.size() < 5) return std::nullopt;
+  CpuSample s;
+  for (size_t i = 0; i < fields.size() && i < 8; ++i) {  // guest time is already in user
+    s.total += fields[i];
+    if (i != 3 && i != 4) s.busy += fields[i];
+  }
+  // "pid (comm) state ppid ..." — comm may hold spaces and parentheses, so fields count from the
+  // last ')': utime and stime are fields 14 and 15, the 12th and 13th after it.
+  const size_t close = procSelfStat.rfind(')');
+  if (close == std::string_view::npos) return std::nullopt;
+  std::istringstream self{std::string(procSelfStat.substr(close + 1))};
+  std::vector<std::string> rest{std::istream_iterator<std::string>(self), {}};
+  if (rest.size() < 13) return std::nullopt;
+  try {
+    s.self = std::stoull(rest[11]) + std::stoull(rest[12]);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  return s;
+}
+
+std::optional<CpuSample> sampleCpu() { return parseCpuSample(slurp("/proc/stat"), slurp("/proc/self/stat")); }
+
+double otherCpuShare(const CpuSample& before, const CpuSample& after) {
+  if (after.total <= before.total) return 0;
+  const double total = double(after.total - before.total);
+  const double busy = after.busy >= before.busy ? double(after.busy - before.busy) : 0;
+  const double self = after.self >= before.self ? double(after.self - before.self) : 0;
+  return std::clamp((busy - self) / total, 0.0, 1.0);
+}
+
+std::string busyWarning(const TimingStats& stats, std::optional<double> otherShare) {
+  std::vector<std::string> why;
+  if (otherShare && *otherShare > kBusyOtherShare)
+    why.push_back(fmt::format("other processes used {:.0f}% of the CPUs", 100 * *otherShare));
+  if (stats.n > 1 && stats.cv > kBusyCv)
+    why.push_back(fmt::format("the runs vary by {:.0f}% (coefficient of variation)", 100 * stats.cv));
+  if (why.empty()) return {};
+  std::string text = "the machine was busy while timing: " + why.front();
+  if (why.size() > 1) text += " and " + why.back();
+  return text + "; the times are less certain (see the interval), rerun on a quiet machine or with --runs auto";
+}
+
+}  // namespace shadowc::rt

@@ -1,0 +1,50 @@
+// The busy check on planted /proc texts and planted statistics: other processes' share of the
+// CPUs is Δbusy − Δself over Δtotal (docs/runtime.md "Busy machine"), and the warning appears
+// exactly when a threshold is passed.
+#include "runtime/executor/busy_machine.h"
+
+#include <fmt/core.h>
+#include <gtest/gtest.h>
+
+namespace shadowc::test {
+namespace {
+
+// /proc/stat's first line: user nice system idle iowait irq softirq steal guest guest_nice.
+std::string stat(uint64_t user, uint64_t idle) { return fmt::format("cpu  {} 0 0 {} 0 0 0 0 0 0\ncpu0 1 2 3\n", user, idle); }
+// /proc/self/stat with a command name holding a space and a parenthesis; utime, stime are 14, 15.
+std::string self(uint64_t utime) {
+  return fmt::format("4242 (shadowc (x) y) R 1 2 3 4 5 6 7 8 9 10 {} 0 0 0 20 0 1 0\n", utime);
+}
+
+TEST(BusyMachine, ParsesTheKernelsFormats) {
+  const std::optional<rt::CpuSample> s = rt::parseCpuSample(stat(300, 700), self(120));
+  ASSERT_TRUE(s);
+  EXPECT_EQ(s->busy, 300u);
+  EXPECT_EQ(s->total, 1000u);
+  EXPECT_EQ(s->self, 120u);
+  EXPECT_FALSE(rt::parseCpuSample("intr 1 2 3\n", self(1)));
+  EXPECT_FALSE(rt::parseCpuSample(stat(1, 1), "4242 no parenthesis"));
+}
+
+TEST(BusyMachine, OtherProcessesShareIsBusyMinusOursOverAll) {
+  const rt::CpuSample before = *rt::parseCpuSample(stat(300, 700), self(100));
+  // 1000 more jiffies, 600 of them busy, 200 of those ours: others used 400 / 1000.
+  const rt::CpuSample after = *rt::parseCpuSample(stat(900, 1100), self(300));
+  EXPECT_DOUBLE_EQ(rt::otherCpuShare(before, after), 0.4);
+  EXPECT_EQ(rt::otherCpuShare(before, before), 0.0) << "no time passed";
+}
+
+TEST(BusyMachine, WarnsPastEitherThresholdAndOnlyThen) {
+  rt::TimingStats quiet;
+  quiet.n = 10;
+  quiet.cv = rt::kBusyCv / 2;
+  EXPECT_EQ(rt::busyWarning(quiet, rt::kBusyOtherShare / 2), "");
+  EXPECT_EQ(rt::busyWarning(quiet, std::nullopt), "");
+  EXPECT_NE(rt::busyWarning(quiet, rt::kBusyOtherShare * 2).find("other processes used 50%"), std::string::npos);
+  rt::TimingStats spread = quiet;
+  spread.cv = rt::kBusyCv * 2;
+  EXPECT_NE(rt::busyWarning(spread, std::nullopt).find("vary by 40%"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace shadowc::test
