@@ -143,8 +143,7 @@ int runValidation(const ValidationOptions& o) {
 
   // 3. Passes through the run harness: timed runs, metrics against the reference.
   progress(fmt::format("running {} passes ({} warm-up + {} timed runs) on {}", manifest.passes.size(), o.warmup,
-                       rt::toString(o.runs),
-                       ctx.deviceName())
+                       rt::toString(o.runs), ctx.deviceName())
                .c_str());
   rt::RunOptions run;
   run.warmup = o.warmup;

@@ -25,6 +25,8 @@ std::string topPasses(const Row& r) {
 
 std::string formatFrontierTables(const Results& res, bool allRows) {
   const auto front = frontiers(res.rows);
+  const std::vector<FrontierMark> marks = frontierMarks(res.rows);
+  bool anyTie = false;
   std::map<size_t, std::vector<size_t>> byCase;
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   std::string out;
@@ -42,17 +44,25 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
     out +=
         fmt::format("{} {}: {} of {} rows on the frontier (time = median frame total, RMSE vs the Embree reference)\n",
                     allRows ? "trade-off" : "frontier", first.caseLabel, frontier.size(), members.size());
-    out += fmt::format("  {:>3}  {:<{}}  {:>10}  {:>9}  {}\n", "#", "variant", width, "total ms", "rmse",
-                       "slowest passes (ms)");
+    out += fmt::format("  {:>4}  {:<{}}  {:>10}  {:>19}  {:>9}  {}\n", "#", "variant", width, "total ms",
+                       "95% interval", "rmse", "slowest passes (ms)");
     size_t rank = 0;
     for (size_t i : shown) {
       const Row& r = res.rows[i];
-      const std::string mark = allRows ? (onFrontier.count(i) ? "*" : " ") : fmt::format("{}", ++rank);
-      out += fmt::format("  {:>3}  {:<{}}  {:>10.3f}  {:>9.5f}  {}\n", mark, r.variant, width, r.totalMs,
-                         r.metrics.rmse, topPasses(r));
+      // "=": tied on time with a frontier row whose interval overlaps (docs/sweep.md "Ties").
+      const bool tied = marks[i].membership == Membership::Tied;
+      anyTie = anyTie || tied;
+      const std::string mark =
+          (allRows ? std::string(onFrontier.count(i) ? "*" : " ") : fmt::format("{}", ++rank)) + (tied ? "=" : "");
+      const std::string interval =
+          r.total.n > 0 ? fmt::format("[{:.3f}, {:.3f}]", r.total.ciLowMs, r.total.ciHighMs) : std::string("-");
+      out += fmt::format("  {:>4}  {:<{}}  {:>10.3f}  {:>19}  {:>9.5f}  {}\n", mark, r.variant, width, r.totalMs,
+                         interval, r.metrics.rmse, topPasses(r));
     }
     if (allRows) out += "  (* = on the frontier: nothing else here is both faster and more accurate)\n";
   }
+  if (anyTie)
+    out += "  (= tied: its time interval overlaps a frontier row's that may beat it; these runs do not order them)\n";
   return out;
 }
 

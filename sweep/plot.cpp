@@ -54,18 +54,20 @@ PlotFiles writePlots(const std::filesystem::path& dir, const Results& res) {
   PlotFiles files;
   const std::filesystem::path plots = std::filesystem::absolute(dir / "plots");
   const auto front = frontiers(res.rows);
+  const std::vector<FrontierMark> marks = frontierMarks(res.rows);
   std::map<size_t, std::vector<size_t>> byCase;
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   for (const auto& [c, members] : byCase) {
     const std::string stem = fmt::format("case{}", c);
-    std::string all = "# total_ms rmse variant\n", fr = "# total_ms rmse rank variant\n";
+    std::string all = "# total_ms rmse ci_low_ms ci_high_ms variant\n", fr = "# total_ms rmse rank variant\n";
     double lo = 1e300, hi = 0, top = 0, low = 1e300;
     for (size_t i : members) {
       const Row& r = res.rows[i];
       if (!eligible(r)) continue;
-      all += fmt::format("{:.6g} {:.6g} {}\n", r.totalMs, r.metrics.rmse, quoted(r.variant));
-      lo = std::min(lo, r.totalMs);
-      hi = std::max(hi, r.totalMs);
+      all += fmt::format("{:.6g} {:.6g} {:.6g} {:.6g} {}\n", r.totalMs, r.metrics.rmse, timeLowMs(r), timeHighMs(r),
+                         quoted(r.variant));
+      lo = std::min(lo, timeLowMs(r));
+      hi = std::max(hi, timeHighMs(r));
       top = std::max(top, r.metrics.rmse);
       if (r.metrics.rmse > 0) low = std::min(low, r.metrics.rmse);
     }
@@ -77,17 +79,20 @@ PlotFiles writePlots(const std::filesystem::path& dir, const Results& res) {
                                (logY ? fmt::format("set logscale y\nset yrange [{:.6g}:{:.6g}]\n", low / 1.6, top * 2)
                                      : fmt::format("set yrange [0:{:.6g}]\n", top > 0 ? top * 1.2 : 1.0));
     // Frontier points are labelled with their rank in the frontier table: names overlap when
-    // points are close, numbers rarely do.
+    // points are close, numbers rarely do. A tied row's label ends in "=" as in the table.
     if (const auto it = front.find(c); it != front.end())
       for (size_t k = 0; k < it->second.size(); ++k) {
         const Row& r = res.rows[it->second[k]];
-        fr += fmt::format("{:.6g} {:.6g} \"{}\" {}\n", r.totalMs, r.metrics.rmse, k + 1, quoted(r.variant));
+        const bool tied = marks[it->second[k]].membership == Membership::Tied;
+        fr += fmt::format("{:.6g} {:.6g} \"{}{}\" {}\n", r.totalMs, r.metrics.rmse, k + 1, tied ? "=" : "",
+                          quoted(r.variant));
       }
     rt::writeFileAtomically(plots / (stem + ".dat"), all);
     rt::writeFileAtomically(plots / (stem + "_frontier.dat"), fr);
     const std::filesystem::path svgTmp = plots / (stem + ".svg.tmp"), pngTmp = plots / (stem + ".png.tmp");
     const std::string plot = fmt::format(
-        "plot {0} using 1:2 with points pt 7 ps 0.9 lc rgb '#8c96a3' title 'variants', \\\n"
+        "plot {0} using 1:2:3:4 with xerrorbars pt 7 ps 0.9 lc rgb '#8c96a3' title 'variants (95% interval of the "
+        "time)', \\\n"
         "     {1} using 1:2 with linespoints pt 7 ps 1.3 lw 2 lc rgb '#c8102e' title 'Pareto frontier (numbered as "
         "in the table)', \\\n"
         "     {1} using 1:2:3 with labels left offset 0.6,0.7 font ',11' tc rgb '#5a0a16' noenhanced notitle\n",

@@ -45,6 +45,7 @@ table{border-collapse:collapse;background:#fff;width:100%;margin:8px 0 14px;font
 th,td{padding:5px 10px;border-bottom:1px solid #e6e9ed;text-align:left}th{background:#eef0f3;font-weight:600}
 td.num{text-align:right;font-variant-numeric:tabular-nums;font-family:ui-monospace,Menlo,monospace}
 tr.frontier-row td:first-child{color:#c8102e;font-weight:700}
+.tie{color:#8a5a00}
 .plot{background:#fff;border:1px solid #dde1e6;border-radius:6px;padding:6px;display:block;max-width:100%}
 .cards{display:grid;grid-template-columns:repeat(auto-fill,minmax(330px,1fr));gap:14px}
 .card{background:#fff;border:1px solid #dde1e6;border-radius:6px;padding:12px}
@@ -59,19 +60,33 @@ code{font-family:ui-monospace,Menlo,monospace;font-size:13px}
 std::string rowCells(const Row& r) {
   std::string passes;
   for (const auto& p : r.passes) passes += fmt::format("{}{} {:.2f}", passes.empty() ? "" : ", ", p.name, p.medianMs);
+  const std::string interval =
+      r.total.n > 0 ? fmt::format("{:.3f}&ndash;{:.3f}", r.total.ciLowMs, r.total.ciHighMs) : std::string("&ndash;");
   return fmt::format(
-      "<td>{}</td><td class=\"num\">{:.3f}</td><td class=\"num\">{:.5f}</td><td class=\"num\">{:.5f}</td>"
-      "<td class=\"num\">{:.4f}</td><td><code>{}</code></td>",
-      esc(r.variant), r.totalMs, r.metrics.rmse, r.metrics.mae, r.metrics.maxAbsError, esc(passes));
+      "<td>{}</td><td class=\"num\">{:.3f}</td><td class=\"num\">{}</td><td class=\"num\">{:.5f}</td>"
+      "<td class=\"num\">{:.5f}</td><td class=\"num\">{:.4f}</td><td><code>{}</code></td>",
+      esc(r.variant), r.totalMs, interval, r.metrics.rmse, r.metrics.mae, r.metrics.maxAbsError, esc(passes));
 }
 
 constexpr const char* kRowHead =
-    "<th>variant</th><th>total ms</th><th>RMSE</th><th>MAE</th><th>max error</th><th>passes (median ms)</th>";
+    "<th>variant</th><th>total ms</th><th>95% interval</th><th>RMSE</th><th>MAE</th><th>max error</th>"
+    "<th>passes (median ms)</th>";
+
+// The rank cell of a frontier row: "3", or "3 =" when it is tied on time (docs/sweep.md "Ties").
+std::string rankCell(size_t rank, const FrontierMark& mark) {
+  return mark.membership == Membership::Tied
+             ? fmt::format(
+                   "{} <span class=\"tie\" title=\"tied on time: its interval overlaps a frontier row that "
+                   "may beat it\">=</span>",
+                   rank)
+             : fmt::format("{}", rank);
+}
 
 }  // namespace
 
 std::string reportHtml(const Results& res, const PlotFiles& plots) {
   const auto front = frontiers(res.rows);
+  const std::vector<FrontierMark> marks = frontierMarks(res.rows);
   std::map<size_t, std::vector<size_t>> byCase;
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   std::string h = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -80,9 +95,11 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
   h += fmt::format("<h1>What accuracy costs in time: <code>{}</code></h1>\n", esc(res.sweep));
   const std::string device = res.rows.empty() ? "" : res.rows.front().device;
   h += fmt::format(
-      "<p class=\"sub\">shadowc sweep{} &middot; {} &middot; time = median GPU frame total after warm-up; error = RMSE "
-      "of the visibility against the Embree ray-traced reference over the geometry pixels. The frontier holds the "
-      "variants nothing else beats on both.</p>\n",
+      "<p class=\"sub\">shadowc sweep{} &middot; {} &middot; time = median frame total after warm-up, with the 95% "
+      "interval of the "
+      "median; error = RMSE of the visibility against the Embree ray-traced reference over the geometry pixels. The "
+      "frontier holds the variants nothing else beats for certain on both; = marks a row tied on time with one that "
+      "may beat it.</p>\n",
       res.shard == "0/1" ? "" : " (" + esc(res.shard) + ")", esc(device));
   h += "<div class=\"stats\">";
   h += fmt::format("<div class=\"stat\"><b>{}</b>rows</div><div class=\"stat\"><b>{}</b>cases</div>", res.rows.size(),
@@ -111,7 +128,7 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
     size_t rank = 0;
     for (size_t i : frontier)
       h += fmt::format("<tr class=\"frontier-row\" data-case=\"{}\" data-key=\"{}\"><td>{}</td>{}</tr>\n",
-                       esc(first.caseLabel), res.rows[i].key, ++rank, rowCells(res.rows[i]));
+                       esc(first.caseLabel), res.rows[i].key, rankCell(++rank, marks[i]), rowCells(res.rows[i]));
     h += "</table>\n<div class=\"cards\">\n";
     rank = 0;
     for (size_t i : frontier) {

@@ -213,14 +213,15 @@ std::string resultsCsv(const Results& res) {
     const FrontierMark& mark = marks[i];
     std::string tied;
     for (size_t k : mark.tiedWith) tied += (tied.empty() ? "" : ";") + res.rows[k].variant;
-    out +=
-        fmt::format("{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{},{},{},{},{},{:.4f},{:.4f},{:.4f},{:.4f},{:.4f},{},{}\n",
-                    csvField(r.caseLabel), csvField(r.scene), r.screen, r.map, csvField(r.variant), csvField(r.base),
-                    r.shader, csvField(params), r.totalMs, m.rmse, m.mae, m.maxAbsError, m.p99AbsError, m.lightBleeding,
-                    m.overDarkening, m.nonFinite, mark.membership != Membership::Off ? 1 : 0, csvField(passes), r.contentHash, r.key,
-                    csvField(r.spec.dump()), ratio ? fmt::format("{:.4f}", *ratio) : "", csvField(r.clock),
-                    r.rejectedRuns, r.runs, r.total.minMs, r.total.p90Ms, timeLowMs(r), timeHighMs(r), r.total.cv,
-                    mark.membership == Membership::Tied ? 1 : 0, csvField(tied));
+    out += fmt::format(
+        "{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{},{},{},{},{},{:.4f},"
+        "{:.4f},{:.4f},{:.4f},{:.4f},{},{}\n",
+        csvField(r.caseLabel), csvField(r.scene), r.screen, r.map, csvField(r.variant), csvField(r.base), r.shader,
+        csvField(params), r.totalMs, m.rmse, m.mae, m.maxAbsError, m.p99AbsError, m.lightBleeding, m.overDarkening,
+        m.nonFinite, mark.membership != Membership::Off ? 1 : 0, csvField(passes), r.contentHash, r.key,
+        csvField(r.spec.dump()), ratio ? fmt::format("{:.4f}", *ratio) : "", csvField(r.clock), r.rejectedRuns, r.runs,
+        r.total.minMs, r.total.p90Ms, timeLowMs(r), timeHighMs(r), r.total.cv,
+        mark.membership == Membership::Tied ? 1 : 0, csvField(tied));
   }
   return out;
 }

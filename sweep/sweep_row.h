@@ -35,9 +35,9 @@ struct Row {
   std::string contentHash;      // manifest content hash of the compiled variant
   std::vector<PassTime> passes;
   double totalMs = 0;
-  rt::TimingStats total;  // the run totals' statistics (timing_stats.h); median == totalMs
+  rt::TimingStats total;                    // the run totals' statistics (timing_stats.h); median == totalMs
   std::string clock = "device timestamps";  // rt::toString(TimingClock): what timed the row
-  std::string busyWarning;  // rt::busyWarning of its timing: empty on a quiet machine
+  std::string busyWarning;                  // rt::busyWarning of its timing: empty on a quiet machine
   int rejectedRuns = 0;                     // implausible readings left out (docs/runtime.md "Rejected runs")
   rt::Metrics metrics;
   std::string device;

@@ -67,7 +67,7 @@ std::string busyWarning(const TimingStats& stats, std::optional<double> otherSha
   if (why.empty()) return {};
   std::string text = "the machine was busy while timing: " + why.front();
   if (why.size() > 1) text += " and " + why.back();
-  return text + "; the times are less certain (see the interval), rerun on a quiet machine or with --runs auto";
+  return text + "; the times are less certain (see the interval): rerun on a quiet machine for tighter ones";
 }
 
 }  // namespace shadowc::rt

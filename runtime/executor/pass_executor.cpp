@@ -108,8 +108,8 @@ struct PassExecutor::Impl {
   UniqueDescriptorPool pool;
   std::vector<PassResource> passes;
   UniqueQueryPool queries;
-  VkCommandBuffer cmd = VK_NULL_HANDLE;  // the whole run, stamped
-  std::vector<VkCommandBuffer> passCmds;  // one pass each, unstamped: the host clock's runs
+  VkCommandBuffer cmd = VK_NULL_HANDLE;       // the whole run, stamped
+  std::vector<VkCommandBuffer> passCmds;      // one pass each, unstamped: the host clock's runs
   VkCommandBuffer emptyCmd = VK_NULL_HANDLE;  // nothing: one submission's host overhead
   HostClock hostClock = steadyHostClock();
   std::vector<FormChoice> formChoices;

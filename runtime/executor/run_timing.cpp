@@ -10,9 +10,7 @@
 
 namespace shadowc::rt {
 
-std::string_view toString(TimingClock clock) {
-  return clock == TimingClock::Host ? "host clock" : "device timestamps";
-}
+std::string_view toString(TimingClock clock) { return clock == TimingClock::Host ? "host clock" : "device timestamps"; }
 
 TimingClock resolveClock(ClockChoice choice, bool cpuDevice) {
   switch (choice) {

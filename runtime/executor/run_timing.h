@@ -94,10 +94,10 @@ struct TimingResult {
   std::vector<double> runHostMs;    // each accepted run's host submit-to-fence time, paired with runTotalsMs
   int warmup = 0, runs = 0;         // runs = accepted timed runs
   TimingClock clock = TimingClock::Device;
-  std::vector<RejectedRun> rejected;  // the implausible readings, in run order
-  double submitOverheadMs = 0;        // host time of an empty submission (median), the lower bound's allowance
-  TimingStats stats;                  // of runTotalsMs: min, median, p90, the median's interval, spread
-  bool stoppedAtCap = false;          // auto run count: the time cap ended the runs before the interval was narrow
+  std::vector<RejectedRun> rejected;    // the implausible readings, in run order
+  double submitOverheadMs = 0;          // host time of an empty submission (median), the lower bound's allowance
+  TimingStats stats;                    // of runTotalsMs: min, median, p90, the median's interval, spread
+  bool stoppedAtCap = false;            // auto run count: the time cap ended the runs before the interval was narrow
   std::optional<double> otherCpuShare;  // other processes' share of the CPUs during the runs (busy_machine.h)
 };
 

@@ -56,9 +56,17 @@ TimingStats timingStats(std::vector<double> v) {
 }
 
 nlohmann::ordered_json toJson(const TimingStats& s) {
-  return {{"n", s.n},           {"min_ms", s.minMs},       {"median_ms", s.medianMs},   {"p90_ms", s.p90Ms},
-          {"max_ms", s.maxMs},  {"mean_ms", s.meanMs},     {"stddev_ms", s.stddevMs},   {"cv", s.cv},
-          {"ci_low_ms", s.ciLowMs}, {"ci_high_ms", s.ciHighMs}, {"ci_coverage", s.ciCoverage}};
+  return {{"n", s.n},
+          {"min_ms", s.minMs},
+          {"median_ms", s.medianMs},
+          {"p90_ms", s.p90Ms},
+          {"max_ms", s.maxMs},
+          {"mean_ms", s.meanMs},
+          {"stddev_ms", s.stddevMs},
+          {"cv", s.cv},
+          {"ci_low_ms", s.ciLowMs},
+          {"ci_high_ms", s.ciHighMs},
+          {"ci_coverage", s.ciCoverage}};
 }
 
 TimingStats timingStatsFromJson(const nlohmann::json& j) {

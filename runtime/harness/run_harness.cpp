@@ -67,8 +67,8 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
   return out;
 }
 
-std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup,
-                                          int rounds, ClockChoice clock) {
+std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup, int rounds,
+                                          ClockChoice clock) {
   if (warmup < 0 || rounds < 1) throw ExecutorError("interleaved timing needs warm-up >= 0 and rounds >= 1");
   std::vector<std::unique_ptr<PassExecutor>> ex;
   for (const TimedRun& r : runs) {

@@ -32,11 +32,11 @@ struct RunInputs {
 };
 
 struct RunOptions {
-  int warmup = 0;                      // untimed runs first (lavapipe JIT-compiles on the first dispatch)
-  RunCount runs;                       // timed runs (or auto); 0 = one untimed run, no timing
+  int warmup = 0;                         // untimed runs first (lavapipe JIT-compiles on the first dispatch)
+  RunCount runs;                          // timed runs (or auto); 0 = one untimed run, no timing
   ClockChoice clock = ClockChoice::Auto;  // Auto: the host clock on a CPU device (run_timing.h)
-  std::vector<std::string> downloads;  // intermediate images to read back (level 0, layer 0)
-  std::string passForm;                // the form of passes with several: "" = SHADOWC_PASS_FORM or auto (pass_forms.h)
+  std::vector<std::string> downloads;     // intermediate images to read back (level 0, layer 0)
+  std::string passForm;  // the form of passes with several: "" = SHADOWC_PASS_FORM or auto (pass_forms.h)
 };
 
 struct RunOutputs {
@@ -61,7 +61,7 @@ struct TimedRun {
   std::string passForm;  // as RunOptions::passForm
 };
 // A rejected reading is tried again within its round (PassExecutor::time) and counted.
-std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup,
-                                          int rounds, ClockChoice clock = ClockChoice::Auto);
+std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<TimedRun>& runs, int warmup, int rounds,
+                                          ClockChoice clock = ClockChoice::Auto);
 
 }  // namespace shadowc::rt

@@ -176,9 +176,9 @@ TEST(CalibrationSweep, EveryLightTypeIsSweptAndJoined) {
   ASSERT_EQ(report.size(), 3u);
   for (const planning::ReportRow& r : report) {
     EXPECT_TRUE(r.planError.empty()) << r.scene << ": " << r.planError;
-    EXPECT_LE(test::validateWrittenPlan(context(), r.planText, r.scene, request.screen, request.map, request.samples)
-                  .rmse,
-              r.bound)
+    EXPECT_LE(
+        test::validateWrittenPlan(context(), r.planText, r.scene, request.screen, request.map, request.samples).rmse,
+        r.bound)
         << r.scene;
     EXPECT_EQ(r.everything.variant.empty(), r.scene == "point_room") << r.scene;
   }

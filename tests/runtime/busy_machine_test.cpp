@@ -10,7 +10,9 @@ namespace shadowc::test {
 namespace {
 
 // /proc/stat's first line: user nice system idle iowait irq softirq steal guest guest_nice.
-std::string stat(uint64_t user, uint64_t idle) { return fmt::format("cpu  {} 0 0 {} 0 0 0 0 0 0\ncpu0 1 2 3\n", user, idle); }
+std::string stat(uint64_t user, uint64_t idle) {
+  return fmt::format("cpu  {} 0 0 {} 0 0 0 0 0 0\ncpu0 1 2 3\n", user, idle);
+}
 // /proc/self/stat with a command name holding a space and a parenthesis; utime, stime are 14, 15.
 std::string self(uint64_t utime) {
   return fmt::format("4242 (shadowc (x) y) R 1 2 3 4 5 6 7 8 9 10 {} 0 0 0 20 0 1 0\n", utime);

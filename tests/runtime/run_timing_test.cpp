@@ -2,12 +2,12 @@
 // host's clock says cannot be true is rejected and counted and never reaches a median; a
 // plausible one is used. The bounds are docs/runtime.md "Rejected runs":
 // 0.5·(host − empty submission) <= device total <= 1.01·host + 2 ticks.
+#include "runtime/executor/run_timing.h"
+
 #include <gtest/gtest.h>
 
 #include <deque>
 #include <stdexcept>
-
-#include "runtime/executor/run_timing.h"
 
 namespace shadowc::test {
 namespace {
@@ -204,7 +204,8 @@ TEST(RunCount, ParsesACountOrAutoAndRefusesAnythingElse) {
   EXPECT_FALSE(rt::parseRunCount("7").automatic);
   EXPECT_EQ(rt::toString(rt::parseRunCount("7")), "7");
   EXPECT_EQ(rt::toString(rt::parseRunCount("auto")), "auto");
-  for (const char* bad : {"0", "-3", "5x", "", "Auto", "1e3"}) EXPECT_THROW(rt::parseRunCount(bad), std::invalid_argument) << bad;
+  for (const char* bad : {"0", "-3", "5x", "", "Auto", "1e3"})
+    EXPECT_THROW(rt::parseRunCount(bad), std::invalid_argument) << bad;
 }
 
 }  // namespace

@@ -20,7 +20,7 @@ struct TableRow {
 };
 
 std::vector<TableRow> tradeoffRows(const std::string& out) {
-  const std::regex row(R"(^\s+([*]?)\s+(\w+)\s+([0-9.]+)\s+([0-9.]+)\s)");
+  const std::regex row(R"(^\s+([*]?)=?\s+(\w+)\s+([0-9.]+)\s+\[[0-9.]+, [0-9.]+\]\s+([0-9.]+)\s)");
   std::vector<TableRow> rows;
   std::istringstream in(out.substr(std::min(out.size(), out.find("trade-off "))));
   for (std::string l; std::getline(in, l);) {

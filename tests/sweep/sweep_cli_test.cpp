@@ -94,13 +94,17 @@ TEST(SweepCli, FrontierOnTerminalEqualsCsvAndReport) {
   const auto dir = writeSweep("sweep-frontier", tinySweep());
   const test::CliResult r = runSweep(dir, "out");
   ASSERT_EQ(r.code, 0) << r.out << r.err;
-  // Terminal: the lines of the frontier block, "  <rank>  <variant>  <ms>  <rmse>  ...".
-  const std::regex line(R"(^\s+(\d+)\s+(\S+)\s+([0-9.]+)\s+([0-9.]+)\s)");
+  // Terminal: the lines of the frontier block, "  <rank>[=]  <variant>  <ms>  [<low>, <high>]  <rmse>  ...".
+  const std::regex line(R"(^\s+(\d+)=?\s+(\S+)\s+([0-9.]+)\s+\[([0-9.]+), ([0-9.]+)\]\s+([0-9.]+)\s)");
   std::vector<std::tuple<std::string, double, double>> printed;
   std::istringstream out(r.out);
   for (std::string l; std::getline(out, l);) {
     std::smatch m;
-    if (std::regex_search(l, m, line)) printed.emplace_back(m[2], std::stod(m[3]), std::stod(m[4]));
+    if (!std::regex_search(l, m, line)) continue;
+    printed.emplace_back(m[2], std::stod(m[3]), std::stod(m[6]));
+    // The median lies inside its own interval (rounded to the printed 3 decimals).
+    EXPECT_LE(std::stod(m[4]), std::stod(m[3])) << l;
+    EXPECT_LE(std::stod(m[3]), std::stod(m[5])) << l;
   }
   std::vector<CsvRow> csvFrontier;
   for (const CsvRow& c : csvRows(dir / "out"))
@@ -124,7 +128,7 @@ TEST(SweepCli, FrontierOnTerminalEqualsCsvAndReport) {
   for (size_t n; (n = std::fread(buf, 1, sizeof buf, p)) > 0;) dom.append(buf, n);
   ASSERT_EQ(::pclose(p), 0) << "chromium failed (scripts/install-deps.sh installs it)";
   const std::regex tr(
-      R"re(<tr class="frontier-row" data-case="[^"]*" data-key="([0-9a-f]+)"><td>\d+</td><td>([^<]+)</td>)re");
+      R"re(<tr class="frontier-row" data-case="[^"]*" data-key="([0-9a-f]+)"><td>\d+(?: <span class="tie"[^>]*>=</span>)?</td><td>([^<]+)</td>)re");
   std::vector<std::pair<std::string, std::string>> reported;
   for (auto it = std::sregex_iterator(dom.begin(), dom.end(), tr); it != std::sregex_iterator(); ++it)
     reported.emplace_back((*it)[1], (*it)[2]);
@@ -244,10 +248,13 @@ TEST(SweepCli, InterruptedSweepRerunsNothingFinished) {
   EXPECT_EQ(results(dir / "fresh")["stats"]["ran"], 4);
 }
 
-// Everything of a row but its times (and the images' names, which carry the same key).
+// Everything of a row but its times, their statistics and the busy warning (and the images'
+// names, which carry the same key).
 std::string measured(const sweep::Row& r) {
   json j = sweep::rowToJson(r);
   j.erase("total_ms");
+  j.erase("total");
+  j.erase("busy_warning");
   j.erase("passes");
   return j.dump();
 }
