@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/runs_option.h"
 #include "planning/calibration.h"
 #include "planning/calibration_sweep.h"
 #include "planning/planner.h"
@@ -44,7 +45,8 @@ CommandRunner registerPlan(CLI::App& app) {
     double maxRmse = -1, budgetMs = -1;
     std::string out, model, calibrate, report, device, sweepDir = "plan-sweep", fromSweep, writeSweep;
     uint32_t screen = 256, map = 1024;
-    int samples = 16, runs = 5, warmup = 2;
+    int samples = 16, warmup = 2;
+    rt::RunCount runs = 5;
   };
   auto o = std::make_shared<Options>();
   // The command as the user could type it again (recorded in the written files).
@@ -60,8 +62,8 @@ CommandRunner registerPlan(CLI::App& app) {
       s += " --from-sweep " + o->fromSweep;
     else if (!o->calibrate.empty() || !o->report.empty())
       s += " --sweep-dir " + o->sweepDir;
-    s += fmt::format(" --screen {} --map {} --samples {} --runs {} --warmup {}", o->screen, o->map, o->samples, o->runs,
-                     o->warmup);
+    s += fmt::format(" --screen {} --map {} --samples {} --runs {} --warmup {}", o->screen, o->map, o->samples,
+                     rt::toString(o->runs), o->warmup);
     if (!o->out.empty()) s += " -o " + o->out;
     return s;
   };
@@ -75,7 +77,7 @@ CommandRunner registerPlan(CLI::App& app) {
   addRenamedOption(sub, "--size", "--screen");
   sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
   sub->add_option("--samples", o->samples, "Reference light samples per axis (N x N)")->capture_default_str();
-  sub->add_option("--runs", o->runs, "Timed runs per confirmation (the median counts)")->capture_default_str();
+  addRunsOption(sub, o->runs, "Timed runs per confirmation (the median counts)");
   sub->add_option("--warmup", o->warmup, "Untimed warm-up runs per confirmation")->capture_default_str();
   sub->add_option("--model", o->model, "Plan model JSON (default: the built-in samples/plan/model.json)");
   sub->add_option("--calibrate", o->calibrate,
@@ -94,7 +96,7 @@ CommandRunner registerPlan(CLI::App& app) {
                   "Write the calibration sweep's description (for `shadowc sweep FILE -o DIR`) and exit");
   sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");
   return [o, commandLine]() -> int {
-    if (o->screen == 0 || o->map == 0 || o->samples < 1 || o->runs < 1 || o->warmup < 0)
+    if (o->screen == 0 || o->map == 0 || o->samples < 1 || !o->runs.any() || o->warmup < 0)
       throw std::invalid_argument("--screen, --map, --samples and --runs must be positive, --warmup >= 0");
     for (const std::string& s : o->scenes) (void)rt::loadScene(s);  // an unknown scene is one message, before any work
     auto log = [](const std::string& line) { fmt::print(stderr, "shadowc: {}\n", line); };
@@ -161,8 +163,12 @@ CommandRunner registerPlan(CLI::App& app) {
       fmt::print("planned  {} -> {}\n", p.chosen.name, o->out);
       for (size_t i = 0; i < p.stats.size(); ++i)
         fmt::print("  {:<24} rmse {:.4f}  {:.2f} ms\n", p.stats[i].scene, p.measured.rmse[i], p.measured.ms[i]);
+      fmt::print("  worst scene's time {:.2f} ms, 95% interval [{:.2f}, {:.2f}]\n", p.measured.worstMs,
+                 p.measured.worstLowMs, p.measured.worstHighMs);
       fmt::print("tried   ");
-      for (const auto& t : p.tried) fmt::print(" {} ({:.4f}, {:.2f} ms)", t.variant, t.worstRmse, t.worstMs);
+      for (const auto& t : p.tried)
+        fmt::print(" {} ({:.4f}, {:.2f} ms [{:.2f}, {:.2f}])", t.variant, t.worstRmse, t.worstMs, t.worstLowMs,
+                   t.worstHighMs);
       fmt::print("\n");
     } catch (const planning::PlanError& e) {
       std::fflush(stdout);

@@ -23,8 +23,9 @@ struct SweepData;
 struct CalibrationRequest {
   std::vector<std::string> scenes;  // empty = every built-in scene
   uint32_t screen = 256, map = 1024;
-  int samples = 16, warmup = 2, runs = 5;
-  std::string command;  // recorded as generated_by
+  int samples = 16, warmup = 2;
+  rt::RunCount runs = 5;  // a count, or auto (runtime/executor/run_timing.h)
+  std::string command;    // recorded as generated_by
   std::function<void(const std::string&)> log;
 };
 
@@ -43,7 +44,7 @@ struct ReportRow {
   double bound = 0, best = 0;
   std::string bestVariant;
   Measurement plan, everything, fastest;
-  std::string planText;  // the filter description the planner wrote for `plan`
+  std::string planText;   // the filter description the planner wrote for `plan`
   size_t confirmed = 0;   // candidates the planner measured (of the catalog)
   std::string planError;  // when planning failed
 };

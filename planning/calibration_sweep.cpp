@@ -9,6 +9,7 @@
 #include "driver/driver.h"
 #include "runtime/scene/scene.h"
 #include "spec/load_filter.h"
+#include "sweep/pareto.h"
 
 namespace shadowc::planning {
 namespace {
@@ -100,7 +101,10 @@ std::string calibrationSweepJson(const CalibrationRequest& r, LightType light) {
   j["screen"] = r.screen;
   j["map"] = r.map;
   j["reference_samples"] = r.samples;
-  j["runs"] = r.runs;
+  if (r.runs.automatic)
+    j["runs"] = "auto";
+  else
+    j["runs"] = r.runs.runs;
   j["warmup"] = r.warmup;
   return j.dump(1) + "\n";
 }
@@ -178,6 +182,8 @@ SweepData joinSweep(rt::VulkanContext& ctx, const sweep::Results& results, const
       m.ms = {row.totalMs};
       m.worstRmse = row.metrics.rmse;
       m.worstMs = row.totalMs;
+      m.worstLowMs = sweep::timeLowMs(row);
+      m.worstHighMs = sweep::timeHighMs(row);
       sc.byName[c.name] = m;
       CalibrationRun run;
       run.scene = sc.label;

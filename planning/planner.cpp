@@ -98,8 +98,18 @@ std::string measurementKey(const std::string& variant, const PlanScenes& scenes,
   return variant + "|" + sceneList(scenes) + "|" + (slopeBias ? "slope" : "constant");
 }
 
+bool replacesChosen(const Measurement& candidate, const Measurement& chosen, bool budgetOnly) {
+  if (budgetOnly) return candidate.worstRmse < chosen.worstRmse;
+  if (candidate.worstHighMs < chosen.worstLowMs) return true;   // certainly faster
+  if (chosen.worstHighMs < candidate.worstLowMs) return false;  // certainly slower
+  if (candidate.worstRmse != chosen.worstRmse)
+    return candidate.worstRmse < chosen.worstRmse;  // tied: the more accurate
+  return candidate.worstMs < chosen.worstMs;
+}
+
 Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
-                             const PlanModel& model, int warmup, int runs, std::map<std::string, Measurement>* cache) {
+                             const PlanModel& model, int warmup, const rt::RunCount& runs,
+                             std::map<std::string, Measurement>* cache) {
   DescribeOptions d;
   d.slopeBias = useSlopeBias(scenes.stats, model.rules);
   d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
@@ -121,9 +131,12 @@ Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const P
     options.runs = runs;
     const rt::SceneRunResult run = rt::runOnScene(ctx, passes, *prepared, options);
     m.rmse.push_back(run.metrics.rmse);
-    m.ms.push_back(run.outputs.timing->totalMs);
+    const rt::TimingResult& t = *run.outputs.timing;
+    m.ms.push_back(t.totalMs);
     m.worstRmse = std::max(m.worstRmse, run.metrics.rmse);
-    m.worstMs = std::max(m.worstMs, run.outputs.timing->totalMs);
+    m.worstMs = std::max(m.worstMs, t.totalMs);
+    m.worstLowMs = std::max(m.worstLowMs, t.stats.n > 0 ? t.stats.ciLowMs : t.totalMs);
+    m.worstHighMs = std::max(m.worstHighMs, t.stats.n > 0 ? t.stats.ciHighMs : t.totalMs);
   }
   if (cache) (*cache)[key] = m;
   return m;
@@ -266,8 +279,7 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
     const bool meets =
         (!request.maxRmse || m.worstRmse <= *request.maxRmse) && (!request.budgetMs || m.worstMs <= *request.budgetMs);
     if (!meets) continue;
-    const bool better = budgetOnly ? m.worstRmse < result.measured.worstRmse : m.worstMs < result.measured.worstMs;
-    if (!chosen || better) {
+    if (!chosen || replacesChosen(m, result.measured, budgetOnly)) {
       chosen = &o;
       result.measured = m;
     }

@@ -17,6 +17,7 @@
 #include "planning/candidates.h"
 #include "planning/plan_model.h"
 #include "planning/scene_analysis.h"
+#include "runtime/executor/run_timing.h"
 #include "runtime/harness/scene_run.h"
 
 namespace shadowc::rt {
@@ -36,7 +37,8 @@ struct PlanRequest {
   std::optional<double> budgetMs;
   uint32_t screen = 256, map = 1024;
   int samples = 16;  // reference light samples per axis
-  int warmup = 2, runs = 5;
+  int warmup = 2;
+  rt::RunCount runs = 5;  // a count, or auto (runtime/executor/run_timing.h)
   std::string filterName = "planned";
   std::string command;                          // echoed in the written file's header
   std::function<void(const std::string&)> log;  // progress lines (stderr)
@@ -47,7 +49,18 @@ struct Measurement {
   std::string variant;
   std::vector<double> rmse, ms;  // per scene
   double worstRmse = 0, worstMs = 0;
+  // Where the worst scene's median time can lie: if each scene's median is inside its 95%
+  // interval [lo_i, hi_i], the largest median is inside [max lo_i, max hi_i]. Equal to worstMs
+  // for a measurement without intervals.
+  double worstLowMs = 0, worstHighMs = 0;
 };
+
+// Whether a confirmed candidate that meets the bound takes the place of the one chosen so far.
+// With a budget only: a lower worst RMSE. With an error bound: certainly faster (its whole
+// interval below the chosen one's), or tied on time (the intervals overlap) and more accurate,
+// so that reruns whose medians jitter inside overlapping intervals plan the same filter
+// (docs/planning.md "Ties").
+bool replacesChosen(const Measurement& candidate, const Measurement& chosen, bool budgetOnly);
 
 // The scenes of a request, prepared once (rasterized + reference) and analyzed.
 struct PlanScenes {
@@ -61,7 +74,7 @@ PlanScenes preparePlanScenes(rt::VulkanContext& ctx, const std::vector<std::stri
 // cached per measurementKey in `cache` when given (the report fills it from sweep rows).
 std::string measurementKey(const std::string& variant, const PlanScenes& scenes, bool slopeBias);
 Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
-                             const PlanModel& model, int warmup, int runs,
+                             const PlanModel& model, int warmup, const rt::RunCount& runs,
                              std::map<std::string, Measurement>* cache = nullptr);
 
 // Why each feature may or may not be used: the statistic and whether it rules the feature out.

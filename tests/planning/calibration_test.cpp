@@ -63,12 +63,12 @@ TEST(CalibrationSweep, StoredDescriptionIsTodaysCatalog) {
   r.screen = j["screen"];
   r.map = j["map"];
   r.samples = j["reference_samples"];
-  r.runs = j["runs"];
+  r.runs = j["runs"].get<int>();
   r.warmup = j["warmup"];
   EXPECT_EQ(planning::calibrationSweepJson(r), stored)
       << "regenerate: shadowc plan --write-sweep samples/plan/calibration_sweep.json (docs/planning.md)";
   // Sibling: other settings give other bytes (the comparison can fail).
-  r.runs += 1;
+  r.runs.runs += 1;
   EXPECT_NE(planning::calibrationSweepJson(r), stored);
   // Every candidate is there; depth families with both biases.
   EXPECT_EQ(j["filters"].size(), sweptVariants(LightType::Spot));
