@@ -120,7 +120,10 @@ TEST_F(LocalSlurm, JobArrayShardsMergedEqualOneProcess) {
   ASSERT_EQ(merged.skipped.size(), 1u);
   EXPECT_EQ(merged.skipped[0].code, single.skipped.at(0).code);
   EXPECT_EQ(merged.skipped[0].message, single.skipped[0].message);
-  for (size_t i = 0; i < single.rows.size(); ++i) merged.rows[i].totalMs = single.rows[i].totalMs;
+  for (size_t i = 0; i < single.rows.size(); ++i) {
+    merged.rows[i].totalMs = single.rows[i].totalMs;
+    merged.rows[i].total = single.rows[i].total;  // the intervals decide ties (docs/sweep.md "Ties")
+  }
   EXPECT_EQ(sweep::frontiers(merged.rows), sweep::frontiers(single.rows));
 }
 
