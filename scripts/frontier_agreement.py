@@ -97,12 +97,15 @@ def table(a, results):
     lines = [f"Measured by `{cmd}` ({datetime.date.today().isoformat()}, lavapipe on {os.cpu_count()} cores, "
              f"{a.load} busy-loop process(es) beside it; {a.repeat} sweeps of samples/sweeps/default.json at "
              f"{a.screen}² / {a.map}² per setting, each from an empty row cache):", "",
-             "| runs | rows | same frontier flag in every sweep | on in one sweep, off in another | tied rows per sweep "
+             "| runs | rows | keep their membership in every sweep (a tie agrees) | same frontier flag in every sweep "
+             "| on in one sweep, off in another | tied rows per sweep "
              "| row time, largest ÷ smallest over the sweeps: median, max | accepted runs per row (median) "
              "| seconds per sweep |",
-             "|---|---:|---:|---:|---:|---:|---:|---:|"]
+             "|---|---:|---:|---:|---:|---:|---:|---:|---:|"]
     for r in results:
-        lines.append(f"| {r['runs']} | {r['rows']} | {r['same']} | {r['flips']} | {r['ties']:.1f} "
+        keep = r["rows"] - r["flips"]
+        lines.append(f"| {r['runs']} | {r['rows']} | {keep} ({100 * keep / max(1, r['rows']):.0f} %) | {r['same']} "
+                     f"| {r['flips']} | {r['ties']:.1f} "
                      f"| {r['spread_median']:.2f}, {r['spread_max']:.2f} | {r['accepted_median']:g} "
                      f"| {r['seconds']:.0f} |")
     return "\n".join(lines) + "\n"
