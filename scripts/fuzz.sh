@@ -13,11 +13,11 @@ seconds=${SHADOWC_FUZZ_SECONDS:-60}
 targets=("$@")
 ((${#targets[@]})) || targets=(filter scene manifest)
 
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+source "$root/scripts/ccache.sh"
 CC=clang-14 CXX=clang++-14 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DSHADOWC_FUZZ=ON \
-  -DBUILD_TESTING=OFF "${launcher[@]}" >/dev/null
+  -DBUILD_TESTING=OFF "${ccache_args[@]}" >/dev/null
 cmake --build "$build" -j "$(nproc)" --target "${targets[@]/#/fuzz_}"
+ccache_report fuzz.sh
 
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
 export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1

@@ -17,6 +17,7 @@ PKGS=(
   assimp-testmodels                             # real meshes of the duck/spider/engine scenes (/usr/share/assimp/models)
   ninja-build                                     # tests/integration drives a consumer with Ninja and make
   clang-14 libclang-rt-14-dev                     # libFuzzer + ASan/UBSan runtimes (scripts/fuzz.sh)
+  ccache                                          # compiler cache shared by clones (scripts/ccache.sh)
 )
 missing=()
 for p in "${PKGS[@]}"; do

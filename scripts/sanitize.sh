@@ -16,14 +16,13 @@ build=${SHADOWC_SANITIZE_BUILD_DIR:-$root/build-asan}
 bash "$root/scripts/install-deps.sh"
 werror=OFF
 [[ ${CI:-} == true ]] && werror=ON
-launcher=()
-command -v ccache >/dev/null && launcher=(-DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+source "$root/scripts/ccache.sh"
 # -O1 -g1 (line tables), not RelWithDebInfo's -O2 -g: the instrumented build is the stage's largest
 # cost, and these flags bring it near the normal build's (measured, compiling filter_spec.cpp:
 # 17 s of CPU instrumented at -O1 -g1, 31 s at -O2 -g, 14 s uninstrumented at -O2 -g) while reports
 # keep function names and lines. ASan's documentation suggests -O1 for reasonable performance.
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g1 -DNDEBUG" \
-  -DSHADOWC_SANITIZE=ON -DSHADOWC_WERROR=$werror "${launcher[@]}" >/dev/null
+  -DSHADOWC_SANITIZE=ON -DSHADOWC_WERROR=$werror "${ccache_args[@]}" >/dev/null
 labels=${SHADOWC_SANITIZE_LABELS:-all}
 if [[ $labels == all ]]; then
   cmake --build "$build" -j "$(nproc)"
@@ -32,14 +31,16 @@ else
   cmake --build "$build" -j "$(nproc)" --target shadowc tests_dsl tests_spec tests_plan tests_manifest tests_driver \
     tests_architecture tests_cli replay_filter replay_scene replay_manifest
 fi
+ccache_report sanitize.sh
 
 supp=$root/tests/sanitizers
 export ASAN_OPTIONS=detect_leaks=1:check_initialization_order=1:strict_init_order=1
 export LSAN_OPTIONS=suppressions=$supp/lsan.supp:print_suppressions=0
 export UBSAN_OPTIONS=suppressions=$supp/ubsan.supp:print_stacktrace=1:halt_on_error=1
 cd "$build"
+source "$root/scripts/ctest_run.sh"
 if [[ $labels == all ]]; then
-  ctest --output-on-failure -j "$(nproc)" "$@"
+  run_ctest sanitize --output-on-failure -j "$(nproc)" "$@"
 else
-  ctest --output-on-failure -j "$(nproc)" -L "$labels" "$@"
+  run_ctest sanitize --output-on-failure -j "$(nproc)" -L "$labels" "$@"
 fi

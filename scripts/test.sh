@@ -11,16 +11,21 @@
 # checked for memory errors, leaks and undefined behaviour; a second, uninstrumented build and run
 # would take CI past its 45-minute budget (measured 2026-12-02 on 2 cores: the suite 145 s plain,
 # 464 s instrumented; docs/integration.md "Sanitizers").
-# Prints each stage's wall time; stops at the first failing stage.
+# Prints each stage's wall time and compiler-cache hit rate (scripts/ccache.sh), and at the end the
+# ten slowest tests of each ctest run (scripts/ctest_run.sh); stops at the first failing stage.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 build=${SHADOWC_BUILD_DIR:-$root/build}
 stages=${SHADOWC_TEST_STAGES:-sanitize fuzz}
 times=()
+# Each ctest run's ten slowest tests (scripts/ctest_run.sh), printed again at the end.
+export SHADOWC_SLOWEST_LOG=$(mktemp)
+trap 'rm -f "$SHADOWC_SLOWEST_LOG"' EXIT
 
+source "$root/scripts/ctest_run.sh"
 suite() {
   bash "$root/scripts/build.sh"
-  (cd "$build" && ctest --output-on-failure -j "$(nproc)" "$@")
+  (cd "$build" && run_ctest suite --output-on-failure -j "$(nproc)" "$@")
 }
 run_stage() {
   local name=$1 start=$SECONDS
@@ -39,4 +44,5 @@ for stage in $stages; do
   *) echo "test.sh: unknown stage '$stage' (suite, sanitize, fuzz)" >&2; exit 2 ;;
   esac
 done
+cat "$SHADOWC_SLOWEST_LOG"
 echo "test.sh: all passed (${times[*]/%/;} total $SECONDS s)"
