@@ -32,7 +32,8 @@ struct CompileArgs {
   bool depsFile = false;      // -MD
   std::string depsTarget;     // -MT: the rule's target instead of the outputs
   bool werror = false;
-  bool generic = false;  // --generic
+  bool generic = false;   // --generic
+  bool counters = false;  // --counters
   uint32_t lookupSet = 0, lookupBindingBase = 0;
 };
 
@@ -97,6 +98,10 @@ int run(CompileArgs& a, CLI::App& sub) {
   if (a.generic && kinds.count(driver::OutputKind::CppHeader))
     return error(
         "--generic with --emit cpp: the C++ header does not carry the parameter block yet (use manifest.json)");
+  options.counters = a.counters;
+  if (a.counters && kinds.count(driver::OutputKind::CppHeader))
+    return error("--counters with --emit cpp: the C++ header describes a filter to ship, the instrumented build "
+                 "is for measuring one (docs/manifest.md \"Work counters\")");
   for (driver::OutputKind k : {driver::OutputKind::Hlsl, driver::OutputKind::Msl, driver::OutputKind::CppHeader})
     if (kinds.count(k)) options.engineOutputs.insert(k);
   if (a.outputDir.empty())
@@ -161,6 +166,9 @@ CommandRunner registerCompile(CLI::App& app) {
   sub->add_flag("--generic", args->generic,
                 "emit the shade pass as one generic shader: numeric options and tables in a uniform block "
                 "filled from manifest.json \"parameters\", loops dynamic (docs/cli.md)");
+  sub->add_flag("--counters", args->counters,
+                "the instrumented build: the shade pass also counts its work (fetches, bounds, walk steps) into "
+                "manifest.json's work_counters buffer (docs/manifest.md \"Work counters\")");
   sub->add_flag("--print-spec", args->printSpec, "print the normalized FilterSpec as JSON and stop (unless -o)");
   sub->add_flag("--print-plan", args->printPlan,
                 "print the pass graph (images, passes, every specialization value) and stop (unless -o)");

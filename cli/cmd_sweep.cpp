@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "runtime/executor/pass_forms.h"
 #include "sweep/expand.h"
 #include "sweep/frontier_table.h"
 #include "sweep/merge.h"
@@ -129,6 +130,7 @@ CommandRunner registerSweep(CLI::App& app) {
       printSkipped(r);
       return finish(r, a->mergeOut);
     }
+    (void)rt::checkedPassForm("");  // SHADOWC_PASS_FORM misspelt: one message before any row runs
     return runSweepCommand(*a);
   };
 }

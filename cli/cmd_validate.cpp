@@ -27,6 +27,9 @@ CommandRunner registerValidate(CLI::App& app) {
   sub->add_option("--pass-form", o->passForm,
                   "Form of passes that have several: auto (by the device), serial, parallel (default: "
                   "env SHADOWC_PASS_FORM, else auto)");
+  sub->add_flag("--counters", o->counters,
+                "Also run the instrumented build once: texel fetches, moment bounds, walk steps per receiver "
+                "(docs/manifest.md \"Work counters\"); the times are the plain build's");
   sub->add_flag(
       "--no-reference-cache", [o](int64_t) { o->useCache = false; },
       "Trace the Embree reference again (do not read or write the reference cache)");

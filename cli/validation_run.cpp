@@ -14,6 +14,7 @@
 #include "manifest/compiled_passes.h"
 #include "planning/scene_analysis.h"
 #include "runtime/executor/busy_machine.h"
+#include "runtime/executor/pass_forms.h"
 #include "runtime/harness/scene_run.h"
 #include "runtime/images/atomic_file.h"
 #include "runtime/images/png_image.h"
@@ -27,11 +28,16 @@ using Clock = std::chrono::steady_clock;
 // The passes to run: a manifest written by `shadowc compile` (what an engine built earlier; known
 // by its content, not its name), or a filter description compiled here by the driver. Empty when
 // it did not compile (the driver's log is on stderr).
-std::optional<CompiledPasses> passesToRun(const ValidationOptions& o) {
-  if (o.filterSource.empty() && CompiledPasses::isManifest(o.filterPath))
-    return CompiledPasses::fromDirectory(o.filterPath);
-  const driver::Result r =
-      o.filterSource.empty() ? driver::compileFile(o.filterPath) : driver::compileSource(o.filterSource, o.filterPath);
+// `counters`: the instrumented build of the description (plan/work_counters.h).
+bool fromManifest(const ValidationOptions& o) {
+  return o.filterSource.empty() && CompiledPasses::isManifest(o.filterPath);
+}
+std::optional<CompiledPasses> passesToRun(const ValidationOptions& o, bool counters = false) {
+  if (fromManifest(o)) return CompiledPasses::fromDirectory(o.filterPath);
+  driver::Options options;
+  options.counters = counters;
+  const driver::Result r = o.filterSource.empty() ? driver::compileFile(o.filterPath, options)
+                                                  : driver::compileSource(o.filterSource, o.filterPath, options);
   if (!r.log.empty()) fmt::print(stderr, "{}", r.log);
   if (!r.artifact) return std::nullopt;
   return r.artifact->passes();
@@ -87,11 +93,26 @@ std::optional<CapReport> capReport(const Manifest& manifest, const rt::PreparedS
   return c;
 }
 
+// The counts beside the times: per receiver, every field the build counts that is not zero.
+void printWork(const rt::WorkCounts& work) {
+  fmt::print("work     {} pass, per receiver over {} receivers (instrumented build, one run)\n", work.pass,
+             work.receivers());
+  bool any = false;
+  for (size_t k = 0; k < work.fields.size(); ++k) {
+    if (work.fields[k] == "receivers" || work.totals[k] == 0) continue;
+    fmt::print("  {:<16} {:12.3f}   total {}\n", work.fields[k], work.perReceiver(work.fields[k]), work.totals[k]);
+    any = true;
+  }
+  if (!any) fmt::print("  (no work counted)\n");
+}
+
 }  // namespace
 
 int runValidation(const ValidationOptions& o) {
   if (o.size == 0 || o.map == 0 || o.samples < 1 || !o.runs.any() || o.warmup < 0)
     throw std::invalid_argument("--screen, --map, --samples and --runs must be positive, --warmup >= 0");
+  // A misspelt form override is refused for every filter, before anything is compiled or traced.
+  const std::string passForm = rt::checkedPassForm(o.passForm);
 
   // 1. The passes to run.
   const std::optional<CompiledPasses> compiled = passesToRun(o);
@@ -101,6 +122,21 @@ int runValidation(const ValidationOptions& o) {
     throw std::invalid_argument(fmt::format(
         "--map {} exceeds the filter's map_size {} (its precision checks assume at most that)", o.map, facts.mapSize));
   const Manifest& manifest = compiled->manifest;
+  // The instrumented build: the manifest given when it is one, else the description compiled
+  // again with the counters (a plain manifest cannot be instrumented: its source is not here).
+  const bool instrumented = rt::workCounterBuffer(manifest) != nullptr;
+  std::optional<CompiledPasses> counted;
+  if (o.counters && !instrumented) {
+    if (fromManifest(o))
+      throw std::invalid_argument("--counters: '" + o.filterPath +
+                                  "' is a plain build; give the .shadow file, or a directory from "
+                                  "`shadowc compile --counters`");
+    counted = passesToRun(o, true);
+    if (!counted) return 1;
+  }
+  if (instrumented)
+    fmt::print(stderr, "shadowc: warning: '{}' is an instrumented build (compile --counters): its times include "
+               "the counting\n", o.filterPath);
 
   // 2. Scene (its errors come before device errors), device, rasterized inputs and reference.
   rt::Scene loaded = rt::loadScene(o.scene);
@@ -148,9 +184,12 @@ int runValidation(const ValidationOptions& o) {
   rt::RunOptions run;
   run.warmup = o.warmup;
   run.runs = o.runs;
-  run.passForm = o.passForm;
+  run.passForm = passForm;
   const rt::SceneRunResult measured = rt::runOnScene(ctx, *compiled, *prepared, run);
   const rt::TimingResult& timing = *measured.outputs.timing;
+  // One untimed run of the instrumented build: the counts of one frame.
+  std::optional<rt::WorkCounts> work = measured.outputs.work;
+  if (counted) work = rt::runOnScene(ctx, *counted, *prepared, {}).outputs.work;
   const std::vector<float>& result = measured.outputs.visibility;
   const std::vector<float>& reference = prepared->reference;
   const rt::Metrics& metrics = measured.metrics;
@@ -168,6 +207,7 @@ int runValidation(const ValidationOptions& o) {
   if (const std::string busy = rt::busyWarning(timing.stats, timing.otherCpuShare); !busy.empty())
     fmt::print(stderr, "shadowc: warning: {}\n", busy);
   if (!measured.outputs.forms.empty()) fmt::print("  {}\n", rt::describeChoices(measured.outputs.forms));
+  if (work) printWork(*work);
   fmt::print("error    over {} geometry pixels\n", metrics.compared);
   fmt::print("  rmse {:.5f}  mae {:.5f}  max {:.5f}  p99 {:.5f}\n", metrics.rmse, metrics.mae, metrics.maxAbsError,
              metrics.p99AbsError);
@@ -210,6 +250,7 @@ int runValidation(const ValidationOptions& o) {
         forms.push_back({{"pass", f.pass}, {"form", f.form}, {"why", f.why}});
     }
     j["timing"] = std::move(t);
+    if (work) j["work"] = rt::workJson(*work);
     j["metrics"] = rt::toJson(metrics);
     if (caps)
       j["caps"] = {{"kernel_max_texels", caps->maxTexels},

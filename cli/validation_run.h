@@ -26,6 +26,9 @@ struct ValidationOptions {
   int warmup = 3;
   bool useCache = true;  // reference cache
   std::string passForm;  // --pass-form: auto, or a form name (serial, parallel); "" = SHADOWC_PASS_FORM or auto
+  // --counters: also run the instrumented build once and report its work per receiver
+  // (docs/manifest.md "Work counters"); the times stay those of the plain build.
+  bool counters = false;
 };
 
 // Prints the report on stdout (progress on stderr). Returns the process exit code; throws

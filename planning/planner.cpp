@@ -98,13 +98,33 @@ std::string measurementKey(const std::string& variant, const PlanScenes& scenes,
   return variant + "|" + sceneList(scenes) + "|" + (slopeBias ? "slope" : "constant");
 }
 
+std::optional<size_t> chooseMeasured(const std::vector<Measurement>& tried, std::optional<double> maxRmse,
+                                     std::optional<double> budgetMs) {
+  std::vector<size_t> meeting;
+  for (size_t i = 0; i < tried.size(); ++i)
+    if ((!maxRmse || tried[i].worstRmse <= *maxRmse) && (!budgetMs || tried[i].worstMs <= *budgetMs))
+      meeting.push_back(i);
+  std::vector<size_t> kept;
+  for (size_t i : meeting) {
+    // Certainly slower than another that meets the bound: out (not with a budget only, where the
+    // bound is on time and accuracy is what is bought).
+    const bool slower = maxRmse && std::any_of(meeting.begin(), meeting.end(), [&](size_t k) {
+                          return k != i && tried[k].worstHighMs < tried[i].worstLowMs;
+                        });
+    if (!slower) kept.push_back(i);
+  }
+  if (kept.empty()) return std::nullopt;
+  return *std::min_element(kept.begin(), kept.end(), [&](size_t a, size_t b) {
+    const Measurement &x = tried[a], &y = tried[b];
+    if (x.worstRmse != y.worstRmse) return x.worstRmse < y.worstRmse;
+    if (x.worstMs != y.worstMs) return x.worstMs < y.worstMs;
+    return x.variant < y.variant;
+  });
+}
+
 bool replacesChosen(const Measurement& candidate, const Measurement& chosen, bool budgetOnly) {
-  if (budgetOnly) return candidate.worstRmse < chosen.worstRmse;
-  if (candidate.worstHighMs < chosen.worstLowMs) return true;   // certainly faster
-  if (chosen.worstHighMs < candidate.worstLowMs) return false;  // certainly slower
-  if (candidate.worstRmse != chosen.worstRmse)
-    return candidate.worstRmse < chosen.worstRmse;  // tied: the more accurate
-  return candidate.worstMs < chosen.worstMs;
+  const std::optional<double> anyBound = budgetOnly ? std::nullopt : std::optional<double>(1e300);
+  return chooseMeasured({chosen, candidate}, anyBound, std::nullopt) == size_t(1);
 }
 
 Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
@@ -262,6 +282,7 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
   PlanResult result;
   result.stats = scenes.stats;
   const Option* chosen = nullptr;
+  std::vector<const Option*> triedOptions;  // result.tried[i] measured triedOptions[i]
   const bool budgetOnly = !request.maxRmse;
   for (const Option& o : options) {
     // With a bound: after a hit, every other allowed candidate (predicted within the bound or
@@ -276,12 +297,10 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
       request.log(fmt::format("confirming {} (predicted {:.4f} rmse, {:.2f} ms)", o.c->name, o.rmse, o.ms));
     const Measurement m = measureCandidate(ctx, *o.c, scenes, model, request.warmup, request.runs, cache);
     result.tried.push_back(m);
-    const bool meets =
-        (!request.maxRmse || m.worstRmse <= *request.maxRmse) && (!request.budgetMs || m.worstMs <= *request.budgetMs);
-    if (!meets) continue;
-    if (!chosen || replacesChosen(m, result.measured, budgetOnly)) {
-      chosen = &o;
-      result.measured = m;
+    triedOptions.push_back(&o);
+    if (const auto pick = chooseMeasured(result.tried, request.maxRmse, request.budgetMs)) {
+      chosen = triedOptions[*pick];
+      result.measured = result.tried[*pick];
     }
   }
   if (!chosen) {

@@ -55,11 +55,16 @@ struct Measurement {
   double worstLowMs = 0, worstHighMs = 0;
 };
 
-// Whether a confirmed candidate that meets the bound takes the place of the one chosen so far.
-// With a budget only: a lower worst RMSE. With an error bound: certainly faster (its whole
-// interval below the chosen one's), or tied on time (the intervals overlap) and more accurate,
-// so that reruns whose medians jitter inside overlapping intervals plan the same filter
-// (docs/planning.md "Ties").
+// The plan's pick among confirmed candidates, as a rule on the set, so that the order they were
+// measured in does not matter (docs/planning.md "Ties"). Only those that meet the bounds count.
+// With an error bound: drop every one certainly slower than another that meets it (its worst
+// scene's interval wholly above the other's), then take the most accurate of the rest, then the
+// lower median, then the first name. With a budget only: the most accurate, then the lower
+// median, then the name. nullopt when none meets the bounds. Index into `tried`.
+std::optional<size_t> chooseMeasured(const std::vector<Measurement>& tried, std::optional<double> maxRmse,
+                                     std::optional<double> budgetMs);
+// Two measurements ordered by chooseMeasured's rule on just these two (both meeting the bound):
+// whether `candidate` is picked over `chosen`.
 bool replacesChosen(const Measurement& candidate, const Measurement& chosen, bool budgetOnly);
 
 // The scenes of a request, prepared once (rasterized + reference) and analyzed.

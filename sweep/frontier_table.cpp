@@ -27,6 +27,7 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
   const auto front = frontiers(res.rows);
   const std::vector<FrontierMark> marks = frontierMarks(res.rows);
   bool anyTie = false;
+  const std::string interval = intervalLabel(res.rows);  // the coverage the runs give (timing_stats.h)
   std::map<size_t, std::vector<size_t>> byCase;
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   std::string out;
@@ -45,7 +46,7 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
         fmt::format("{} {}: {} of {} rows on the frontier (time = median frame total, RMSE vs the Embree reference)\n",
                     allRows ? "trade-off" : "frontier", first.caseLabel, frontier.size(), members.size());
     out += fmt::format("  {:>4}  {:<{}}  {:>10}  {:>19}  {:>9}  {}\n", "#", "variant", width, "total ms",
-                       "95% interval", "rmse", "slowest passes (ms)");
+                       interval, "rmse", "slowest passes (ms)");
     size_t rank = 0;
     for (size_t i : shown) {
       const Row& r = res.rows[i];
@@ -54,10 +55,10 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
       anyTie = anyTie || tied;
       const std::string mark =
           (allRows ? std::string(onFrontier.count(i) ? "*" : " ") : fmt::format("{}", ++rank)) + (tied ? "=" : "");
-      const std::string interval =
+      const std::string range =
           r.total.n > 0 ? fmt::format("[{:.3f}, {:.3f}]", r.total.ciLowMs, r.total.ciHighMs) : std::string("-");
       out += fmt::format("  {:>4}  {:<{}}  {:>10.3f}  {:>19}  {:>9.5f}  {}\n", mark, r.variant, width, r.totalMs,
-                         interval, r.metrics.rmse, topPasses(r));
+                         range, r.metrics.rmse, topPasses(r));
     }
     if (allRows) out += "  (* = on the frontier: nothing else here is both faster and more accurate)\n";
   }

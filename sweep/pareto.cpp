@@ -20,6 +20,13 @@ bool mayDominate(const Row& a, const Row& b) {
 
 bool eligible(const Row& row) { return row.metrics.nonFinite == 0 && row.metrics.compared > 0; }
 
+std::string intervalLabel(const std::vector<Row>& rows) {
+  std::vector<double> coverages;
+  for (const Row& r : rows)
+    if (r.total.n > 0) coverages.push_back(r.total.ciCoverage);
+  return rt::intervalLabel(coverages);
+}
+
 std::vector<FrontierMark> frontierMarks(const std::vector<Row>& rows) {
   std::map<size_t, std::vector<size_t>> byCase;
   for (size_t i = 0; i < rows.size(); ++i)
@@ -32,13 +39,17 @@ std::vector<FrontierMark> frontierMarks(const std::vector<Row>& rows) {
           std::any_of(members.begin(), members.end(), [&](size_t k) { return k != i && dominates(rows[k], rows[i]); });
       marks[i].membership = beaten ? Membership::Off : Membership::On;
     }
+    // A tie is symmetric: when k may beat i, these runs order neither, so both carry the mark
+    // and each names the other.
     for (size_t i : members) {
       if (marks[i].membership == Membership::Off) continue;
       for (size_t k : members)
-        if (k != i && marks[k].membership != Membership::Off && mayDominate(rows[k], rows[i]))
+        if (k != i && marks[k].membership != Membership::Off &&
+            (mayDominate(rows[k], rows[i]) || mayDominate(rows[i], rows[k])))
           marks[i].tiedWith.push_back(k);
-      if (!marks[i].tiedWith.empty()) marks[i].membership = Membership::Tied;
     }
+    for (size_t i : members)
+      if (!marks[i].tiedWith.empty()) marks[i].membership = Membership::Tied;
   }
   return marks;
 }

@@ -59,7 +59,8 @@ PlotFiles writePlots(const std::filesystem::path& dir, const Results& res) {
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   for (const auto& [c, members] : byCase) {
     const std::string stem = fmt::format("case{}", c);
-    std::string all = "# total_ms rmse ci_low_ms ci_high_ms variant\n", fr = "# total_ms rmse rank variant\n";
+    std::string all = "# total_ms rmse ci_low_ms ci_high_ms variant\n", fr = "# total_ms rmse rank variant\n",
+                line = "# total_ms rmse variant\n";
     double lo = 1e300, hi = 0, top = 0, low = 1e300;
     for (size_t i : members) {
       const Row& r = res.rows[i];
@@ -80,23 +81,34 @@ PlotFiles writePlots(const std::filesystem::path& dir, const Results& res) {
                                      : fmt::format("set yrange [0:{:.6g}]\n", top > 0 ? top * 1.2 : 1.0));
     // Frontier points are labelled with their rank in the frontier table: names overlap when
     // points are close, numbers rarely do. A tied row's label ends in "=" as in the table.
-    if (const auto it = front.find(c); it != front.end())
+    // The line runs through the frontier rows by median time, monotone in RMSE: a tied row whose
+    // RMSE is not below the last one on the line (its interval overlaps a faster row's) is drawn
+    // and numbered, but the line does not climb to it.
+    if (const auto it = front.find(c); it != front.end()) {
+      double lineRmse = 1e300;
       for (size_t k = 0; k < it->second.size(); ++k) {
         const Row& r = res.rows[it->second[k]];
         const bool tied = marks[it->second[k]].membership == Membership::Tied;
         fr += fmt::format("{:.6g} {:.6g} \"{}{}\" {}\n", r.totalMs, r.metrics.rmse, k + 1, tied ? "=" : "",
                           quoted(r.variant));
+        if (r.metrics.rmse >= lineRmse) continue;
+        lineRmse = r.metrics.rmse;
+        line += fmt::format("{:.6g} {:.6g} {}\n", r.totalMs, r.metrics.rmse, quoted(r.variant));
       }
+    }
     rt::writeFileAtomically(plots / (stem + ".dat"), all);
     rt::writeFileAtomically(plots / (stem + "_frontier.dat"), fr);
+    rt::writeFileAtomically(plots / (stem + "_line.dat"), line);
     const std::filesystem::path svgTmp = plots / (stem + ".svg.tmp"), pngTmp = plots / (stem + ".png.tmp");
     const std::string plot = fmt::format(
-        "plot {0} using 1:2:3:4 with xerrorbars pt 7 ps 0.9 lc rgb '#8c96a3' title 'variants (95% interval of the "
-        "time)', \\\n"
-        "     {1} using 1:2 with linespoints pt 7 ps 1.3 lw 2 lc rgb '#c8102e' title 'Pareto frontier (numbered as "
-        "in the table)', \\\n"
+        "plot {0} using 1:2:3:4 with xerrorbars pt 7 ps 0.9 lc rgb '#8c96a3' title 'variants ({3} of the "
+        "median time)', \\\n"
+        "     {2} using 1:2 with lines lw 2 lc rgb '#c8102e' title 'Pareto frontier (numbered as in the table; "
+        "= tied)', \\\n"
+        "     {1} using 1:2 with points pt 7 ps 1.3 lc rgb '#c8102e' notitle, \\\n"
         "     {1} using 1:2:3 with labels left offset 0.6,0.7 font ',11' tc rgb '#5a0a16' noenhanced notitle\n",
-        gpPath(plots / (stem + ".dat")), gpPath(plots / (stem + "_frontier.dat")));
+        gpPath(plots / (stem + ".dat")), gpPath(plots / (stem + "_frontier.dat")), gpPath(plots / (stem + "_line.dat")),
+        intervalLabel(res.rows));
     const std::string label = res.rows[members.front()].caseLabel;
     std::string gp = fmt::format(
         "# {} — time vs RMSE, frontier in red (written by shadowc sweep)\n"

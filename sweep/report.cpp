@@ -68,9 +68,13 @@ std::string rowCells(const Row& r) {
       esc(r.variant), r.totalMs, interval, r.metrics.rmse, r.metrics.mae, r.metrics.maxAbsError, esc(passes));
 }
 
-constexpr const char* kRowHead =
-    "<th>variant</th><th>total ms</th><th>95% interval</th><th>RMSE</th><th>MAE</th><th>max error</th>"
-    "<th>passes (median ms)</th>";
+// The rows' heading; `interval`: the label with the coverage the runs give (pareto.h).
+std::string rowHead(const std::string& interval) {
+  return fmt::format(
+      "<th>variant</th><th>total ms</th><th>{}</th><th>RMSE</th><th>MAE</th><th>max error</th>"
+      "<th>passes (median ms)</th>",
+      esc(interval));
+}
 
 // The rank cell of a frontier row: "3", or "3 =" when it is tied on time (docs/sweep.md "Ties").
 std::string rankCell(size_t rank, const FrontierMark& mark) {
@@ -87,6 +91,7 @@ std::string rankCell(size_t rank, const FrontierMark& mark) {
 std::string reportHtml(const Results& res, const PlotFiles& plots) {
   const auto front = frontiers(res.rows);
   const std::vector<FrontierMark> marks = frontierMarks(res.rows);
+  const std::string interval = intervalLabel(res.rows);  // with the coverage the runs give
   std::map<size_t, std::vector<size_t>> byCase;
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   std::string h = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -95,12 +100,12 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
   h += fmt::format("<h1>What accuracy costs in time: <code>{}</code></h1>\n", esc(res.sweep));
   const std::string device = res.rows.empty() ? "" : res.rows.front().device;
   h += fmt::format(
-      "<p class=\"sub\">shadowc sweep{} &middot; {} &middot; time = median frame total after warm-up, with the 95% "
-      "interval of the "
+      "<p class=\"sub\">shadowc sweep{} &middot; {} &middot; time = median frame total after warm-up, with the {} "
+      "of the "
       "median; error = RMSE of the visibility against the Embree ray-traced reference over the geometry pixels. The "
       "frontier holds the variants nothing else beats for certain on both; = marks a row tied on time with one that "
       "may beat it.</p>\n",
-      res.shard == "0/1" ? "" : " (" + esc(res.shard) + ")", esc(device));
+      res.shard == "0/1" ? "" : " (" + esc(res.shard) + ")", esc(device), esc(interval));
   h += "<div class=\"stats\">";
   h += fmt::format("<div class=\"stat\"><b>{}</b>rows</div><div class=\"stat\"><b>{}</b>cases</div>", res.rows.size(),
                    byCase.size());
@@ -124,7 +129,7 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
       h += fmt::format("<img class=\"plot\" src=\"{}\" alt=\"time vs RMSE, {}\" width=\"760\" height=\"480\">\n",
                        esc(p->second), esc(first.caseLabel));
     h += fmt::format("<h3>Frontier</h3>\n<table class=\"frontier\" id=\"frontier-case{}\">\n<tr><th>#</th>{}</tr>\n", c,
-                     kRowHead);
+                     rowHead(interval));
     size_t rank = 0;
     for (size_t i : frontier)
       h += fmt::format("<tr class=\"frontier-row\" data-case=\"{}\" data-key=\"{}\"><td>{}</td>{}</tr>\n",
@@ -149,7 +154,7 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
     h += "</div>\n";
     h += fmt::format(
         "<details><summary>all {} rows of this case</summary>\n<table class=\"all\">\n<tr><th></th>{}</tr>\n",
-        members.size(), kRowHead);
+        members.size(), rowHead(interval));
     for (size_t i : members)
       h += fmt::format("<tr><td>{}</td>{}</tr>\n", onFrontier.count(i) ? "&#9733;" : "", rowCells(res.rows[i]));
     h += "</table>\n</details>\n</section>\n";

@@ -20,7 +20,7 @@ void main() {
   ivec2 pixel = ivec2(gl_GlobalInvocationID.xy);
   ivec2 size = imageSize(visibility);
   if (any(greaterThanEqual(pixel, size))) return;
-  vec4 position = imageLoad(gbuffer_position, pixel);
+  vec4 position = imageLoad(gbuffer_position, pixel); SHADOWC_WORK_BEGIN(position.w != 0.0)
   float v = 1.0;  // background (w == 0) is lit
   if (position.w != 0.0) {
     vec3 normal = imageLoad(gbuffer_normal, pixel).xyz;
@@ -29,5 +29,5 @@ void main() {
   // shadowc_visibility already maps NaN to 0 and clamps; kept here so the pass contract
   // (visibility in [0, 1], never NaN) does not depend on the lookup.
   v = (v >= 0.0) ? min(v, 1.0) : 0.0;
-  imageStore(visibility, pixel, vec4(v, 0.0, 0.0, 0.0));
+  imageStore(visibility, pixel, vec4(v, 0.0, 0.0, 0.0)); SHADOWC_WORK_END
 }

@@ -14,6 +14,7 @@
 #include "emit/output_writer.h"
 #include "plan/generic_block.h"
 #include "plan/planner.h"
+#include "plan/work_counters.h"
 #include "spec/print_filter.h"
 
 namespace shadowc::driver {
@@ -49,6 +50,11 @@ bool engineOutputs(FilterEmitResult& emitted, const Options& options, std::strin
     if (options.engineOutputs.count(kind) && !crossOutputs(emitted.manifest, emitted.files, target, extra, log))
       return false;
   if (options.engineOutputs.count(OutputKind::CppHeader)) {
+    if (options.counters) {
+      log += "error: the C++ header describes a filter to ship; the instrumented build (--counters) is for "
+             "measuring it (docs/manifest.md \"Work counters\"): compile it without the header\n";
+      return false;
+    }
     std::map<std::string, std::string> spirv;
     for (const EmittedFile& f : emitted.files)
       if (outputKindOf(f.name) == OutputKind::Spirv) spirv.emplace(f.name, f.bytes);
@@ -75,6 +81,7 @@ Result finish(const LoadResult& loaded, const Options& options) {
   try {
     r.plan = planPasses(spec);
     if (options.generic) makeGeneric(*r.plan);
+    if (options.counters) addWorkCounters(*r.plan);  // after the generic rewrite: its indices stay constants
   } catch (const std::exception& e) {
     r.log += locatedError(spec, e.what());
     return r;

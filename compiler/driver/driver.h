@@ -45,6 +45,9 @@ struct Options {
   // --generic: the shade pass as engines usually ship it, its numeric options and tables in a
   // uniform block the runtime fills from the manifest, its loops dynamic (plan/generic_block.h).
   bool generic = false;
+  // --counters: the instrumented build, whose shade pass counts its work per pixel into the
+  // manifest's work_counters buffer (plan/work_counters.h, docs/manifest.md "Work counters").
+  bool counters = false;
   std::set<OutputKind> engineOutputs;  // any of Hlsl, Msl, CppHeader (driver/cross_outputs.h, emit/cpp_header.h)
 };
 

@@ -21,11 +21,14 @@ constexpr std::pair<const char*, const char*> kMacros[] = {
     {"minmax", "SHADOWC_BINDING_MINMAX"},
     {"splits", "SHADOWC_BINDING_SPLITS"},
     {"parameters", "SHADOWC_BINDING_PARAMETERS"},     // generic shaders (plan/generic_block.h)
-    {"quadtree_table", "SHADOWC_BINDING_QUADTREE"}};  // `traversal: table` (plan/quadtree_tables.h)
+    {"quadtree_table", "SHADOWC_BINDING_QUADTREE"},  // `traversal: table` (plan/quadtree_tables.h)
+    {"work_counters", "SHADOWC_BINDING_WORK"}};      // the instrumented build (plan/work_counters.h)
 
 bool isLookupResource(const Binding& b) {
-  // The G-buffer and the output are storage images; the quadtree tables a read-only buffer.
-  return b.access == Access::Uniform || b.access == Access::Sampled || b.access == Access::StorageBufferRead;
+  // The G-buffer and the output are storage images; the quadtree tables a read-only buffer, the
+  // work counters (instrumented builds only) a buffer the lookup adds into.
+  return b.access == Access::Uniform || b.access == Access::Sampled || b.access == Access::StorageBufferRead ||
+         b.access == Access::StorageBufferReadWrite;
 }
 
 const char* macroOf(const std::string& image) {

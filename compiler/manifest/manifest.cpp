@@ -41,12 +41,13 @@ constexpr std::array<std::pair<ImageRole, const char*>, 5> kRoles{{{ImageRole::I
                                                                    {ImageRole::InputPosition, "input_position"},
                                                                    {ImageRole::InputNormal, "input_normal"},
                                                                    {ImageRole::OutputVisibility, "output_visibility"}}};
-constexpr std::array<std::pair<Access, const char*>, 6> kAccess{{{Access::Sampled, "sampled"},
+constexpr std::array<std::pair<Access, const char*>, 7> kAccess{{{Access::Sampled, "sampled"},
                                                                  {Access::StorageRead, "storage_read"},
                                                                  {Access::StorageWrite, "storage_write"},
                                                                  {Access::StorageReadWrite, "storage_read_write"},
                                                                  {Access::Uniform, "uniform"},
-                                                                 {Access::StorageBufferRead, "storage_buffer_read"}}};
+                                                                 {Access::StorageBufferRead, "storage_buffer_read"},
+                                                                 {Access::StorageBufferReadWrite, "storage_buffer_read_write"}}};
 constexpr std::array<std::pair<DispatchMode, const char*>, 5> kModes{{{DispatchMode::Texels, "texels"},
                                                                       {DispatchMode::Rows, "rows"},
                                                                       {DispatchMode::Columns, "columns"},
@@ -253,10 +254,21 @@ BufferDesc bufferFromJson(const nlohmann::json& j) {
     throw ManifestError("manifest: buffer '" + b.name + "' must hold whole elements of 1 to 4 int32 (" +
                         std::to_string(b.values.size()) + " values, " + std::to_string(b.components) +
                         " per element), at most 1 MiB");
+  if (j.contains("fields")) {
+    b.fields = get<std::vector<std::string>>(j, "fields");
+    if (b.fields.empty() || b.fields.size() * b.components != b.values.size())
+      throw ManifestError("manifest: buffer '" + b.name + "' names " + std::to_string(b.fields.size()) +
+                          " fields for " + std::to_string(b.values.size() / b.components) + " elements");
+  }
   return b;
 }
 
 }  // namespace
+
+const std::vector<std::string>& passFormNames() {
+  static const std::vector<std::string> names = {"serial", "parallel"};
+  return names;
+}
 
 const std::vector<std::string>& subgroupOperationNames() {
   static const std::vector<std::string> names = {
@@ -361,8 +373,12 @@ nlohmann::ordered_json toJson(const Manifest& m) {
   }
   if (!m.buffers.empty()) {
     auto& buffers = j["buffers"] = nlohmann::ordered_json::array();
-    for (const auto& b : m.buffers)
-      buffers.push_back({{"name", b.name}, {"components", b.components}, {"values", b.values}});
+    for (const auto& b : m.buffers) {
+      nlohmann::ordered_json e{{"name", b.name}, {"components", b.components}};
+      if (!b.fields.empty()) e["fields"] = b.fields;
+      e["values"] = b.values;
+      buffers.push_back(std::move(e));
+    }
   }
   auto& passes = j["passes"] = nlohmann::ordered_json::array();
   for (const auto& p : m.passes) {
@@ -466,7 +482,7 @@ Manifest manifestFromJson(const nlohmann::json& j) {
         throw ManifestError("manifest: pass '" + p.name + "' binds 'parameters' at " + std::to_string(b.binding) +
                             " but has no parameter block there");
       if (b.access == Access::Uniform) continue;
-      if (b.access == Access::StorageBufferRead) {
+      if (b.access == Access::StorageBufferRead || b.access == Access::StorageBufferReadWrite) {
         if (!std::any_of(m.buffers.begin(), m.buffers.end(), [&](const BufferDesc& d) { return d.name == b.image; }))
           throw ManifestError("manifest: pass '" + p.name + "' binds unknown buffer '" + b.image + "'");
         continue;

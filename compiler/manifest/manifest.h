@@ -56,11 +56,14 @@ struct ImageDesc {
   bool linearFilter = false;  // sampled with a linear sampler (else nearest)
 };
 
-enum class Access { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform, StorageBufferRead };
+// StorageBufferReadWrite: a buffer the pass adds into (the instrumented build's work counters,
+// docs/manifest.md "Work counters"); the runtime resets it to its manifest values before a
+// counted run and reads it back after.
+enum class Access { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform, StorageBufferRead, StorageBufferReadWrite };
 struct Binding {
   uint32_t binding = 0;
   // image name, "frame" for the ShadowcFrame uniform buffer, "parameters" for the pass's
-  // ParameterBlock, or a buffer's name (StorageBufferRead: the manifest's `buffers`)
+  // ParameterBlock, or a buffer's name (StorageBufferRead/ReadWrite: the manifest's `buffers`)
   std::string image;
   Access access = Access::Sampled;
   int level = -1;  // storage views: the mip level bound; -1 = level 0 / whole image
@@ -127,6 +130,9 @@ struct PassForm {
   std::array<uint32_t, 3> localSize{8, 8, 1};
   Dispatch dispatch;
 };
+// Every form name the compiler gives a pass ("serial", "parallel"): what a pass form override may
+// name (runtime/executor/pass_forms.h checks it before any work).
+const std::vector<std::string>& passFormNames();
 // The subgroup operation names a form may need, as VkSubgroupFeatureFlagBits spells them.
 const std::vector<std::string>& subgroupOperationNames();
 
@@ -165,10 +171,14 @@ struct ShadeInterface {
 // A read-only storage buffer whose contents the manifest carries (the quadtree's Next/Child
 // tables, docs/manifest.md "Buffers"): the runtime uploads `values` once, as consecutive
 // little-endian int32, and binds it where a pass lists it with access storage_buffer_read.
+// A buffer with `fields` is a work-counter buffer (docs/manifest.md "Work counters"): element k
+// (`components` = 2 words: low, high) counts fields[k], summed over every invocation of the
+// pass that binds it with access storage_buffer_read_write.
 struct BufferDesc {
   std::string name;
   uint32_t components = 1;  // int32 per element (4: the shader reads an ivec4 array)
   std::vector<int32_t> values;
+  std::vector<std::string> fields;  // JSON "fields", absent when empty
   friend bool operator==(const BufferDesc&, const BufferDesc&) = default;
 };
 

@@ -188,10 +188,10 @@ class Planner {
   // order, and the blocked one is less precise for small boxes: fp32 tables keep the serial form.
   bool parallelSat() const { return spec_.storage.sat == SatKind::Int32; }
   void addParallelForm(Pass& pass, DispatchMode mode, PassSource source) {
-    pass.form = "serial";
+    pass.form = passFormNames()[0];  // "serial"
     pass.formNeeds.device = FormDevice::Cpu;
     PassForm f;
-    f.name = "parallel";
+    f.name = passFormNames()[1];  // "parallel"
     f.needs.device = FormDevice::Gpu;
     f.spirv = source.stem + ".spv";
     f.glsl = source.stem + ".glsl";

@@ -3,6 +3,10 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <chrono>
+#include <deque>
+#include <mutex>
+#include <thread>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -49,6 +53,58 @@ std::optional<CpuSample> parseCpuSample(std::string_view procStat, std::string_v
 }
 
 std::optional<CpuSample> sampleCpu() { return parseCpuSample(slurp("/proc/stat"), slurp("/proc/self/stat")); }
+
+namespace {
+
+double steadyMs() {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// Recent samples of this process, oldest first, to reach back to (closeCpuWindow).
+struct Stamped {
+  CpuSample sample;
+  double ms;
+};
+std::mutex historyMutex;
+std::deque<Stamped> history;
+
+void remember(const std::optional<CpuSample>& s, double ms) {
+  if (!s) return;
+  const std::lock_guard lock(historyMutex);
+  history.push_back({*s, ms});
+  while (!history.empty() && history.front().ms < ms - kBusyReachMs) history.pop_front();
+}
+
+}  // namespace
+
+CpuWindow openCpuWindow() {
+  CpuWindow w{sampleCpu(), steadyMs()};
+  remember(w.before, w.openedMs);
+  return w;
+}
+
+std::optional<double> closeCpuWindow(const CpuWindow& window, double* windowMs) {
+  std::optional<CpuSample> before = window.before;
+  double from = window.openedMs, now = steadyMs();
+  if (now - from < kBusyWindowMs) {
+    const std::lock_guard lock(historyMutex);
+    for (auto it = history.rbegin(); it != history.rend(); ++it)
+      if (now - it->ms >= kBusyWindowMs && now - it->ms <= kBusyReachMs) {
+        before = it->sample;
+        from = it->ms;
+        break;
+      }
+  }
+  if (now - from < kBusyWindowMs) {
+    std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(kBusyWindowMs - (now - from)));
+    now = steadyMs();
+  }
+  const std::optional<CpuSample> after = sampleCpu();
+  remember(after, now);
+  if (windowMs) *windowMs = now - from;
+  if (!before || !after) return std::nullopt;
+  return otherCpuShare(*before, *after);
+}
 
 double otherCpuShare(const CpuSample& before, const CpuSample& after) {
   if (after.total <= before.total) return 0;

@@ -27,6 +27,26 @@ std::optional<CpuSample> sampleCpu();
 // between the samples. 0 when no time passed.
 double otherCpuShare(const CpuSample& before, const CpuSample& after);
 
+// The shortest window the share is read over. /proc/stat counts in jiffies (10 ms at the usual
+// USER_HZ of 100), so a window of t ms on c cores holds t / 10 * c of them: 20 ms on 2 cores is 4,
+// and the share moves in 25 % steps against a 25 % threshold; 200 ms is 40, steps of 2.5 %.
+inline constexpr double kBusyWindowMs = 200;
+
+// A window over which other processes' share is read: opened before the timed runs, closed
+// after them. When the runs took less than kBusyWindowMs the window reaches back to the newest
+// sample of this process taken at least that long before the close and at most kBusyReachMs
+// (an earlier window's opening: a sweep's rows time one after another), and failing that the
+// close waits out the rest. So a share is never read over less than kBusyWindowMs.
+inline constexpr double kBusyReachMs = 2000;
+struct CpuWindow {
+  std::optional<CpuSample> before;
+  double openedMs = 0;  // on the steady clock
+};
+CpuWindow openCpuWindow();
+// The share over the window, and how long the window was in `windowMs` when given; nullopt
+// without /proc.
+std::optional<double> closeCpuWindow(const CpuWindow& window, double* windowMs = nullptr);
+
 // The thresholds: other processes used over a quarter of the machine, or the runs' coefficient
 // of variation is over 20% (hyperfine warns on a statistical outlier; a coefficient is what our
 // few runs support).

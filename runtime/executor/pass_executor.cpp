@@ -8,7 +8,6 @@
 #include <map>
 #include <tuple>
 
-#include "runtime/executor/busy_machine.h"
 #include "runtime/executor/spirv_reflect.h"
 #include "runtime/vulkan/vulkan_context.h"
 #include "runtime/vulkan/vulkan_error.h"
@@ -26,18 +25,19 @@ uint32_t ceilDiv(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 
 // A binding's descriptor, and the kind the shader must declare for it.
 VkDescriptorType descriptorType(Access a) {
-  return a == Access::Uniform             ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
-         : a == Access::StorageBufferRead ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
+  return a == Access::Uniform                                                    ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
+         : a == Access::StorageBufferRead || a == Access::StorageBufferReadWrite ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
          : isStorage(a)                   ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
                                           : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 }
 DescriptorKind descriptorKind(Access a) {
-  return a == Access::Uniform             ? DescriptorKind::UniformBuffer
-         : a == Access::StorageBufferRead ? DescriptorKind::StorageBuffer
+  return a == Access::Uniform                                                    ? DescriptorKind::UniformBuffer
+         : a == Access::StorageBufferRead || a == Access::StorageBufferReadWrite ? DescriptorKind::StorageBuffer
          : isStorage(a)                   ? DescriptorKind::StorageImage
                                           : DescriptorKind::CombinedImageSampler;
 }
-bool isImage(Access a) { return a != Access::Uniform && a != Access::StorageBufferRead; }
+bool isBuffer(Access a) { return a == Access::StorageBufferRead || a == Access::StorageBufferReadWrite; }
+bool isImage(Access a) { return a != Access::Uniform && !isBuffer(a); }
 
 // The pass's module from the compiled files (little-endian words, as every .spv is stored).
 std::vector<uint32_t> spirvWords(const CompiledPasses& compiled, const Pass& pass) {
@@ -104,7 +104,9 @@ struct PassExecutor::Impl {
   std::vector<ImageResource> images;
   std::map<std::string, size_t> imageIndex;
   Buffer frame;
-  std::map<std::string, Buffer> buffers;  // the manifest's "buffers", written once from its values
+  // The manifest's "buffers", written from its values at creation (and by resetBuffers: the work
+  // counters a counted run adds into).
+  std::map<std::string, Buffer> buffers;
   UniqueDescriptorPool pool;
   std::vector<PassResource> passes;
   UniqueQueryPool queries;
@@ -393,7 +395,7 @@ struct PassExecutor::Impl {
         writes.push_back(w);
         continue;
       }
-      if (b.access == Access::StorageBufferRead) {
+      if (isBuffer(b.access)) {
         const auto it = buffers.find(b.image);
         if (it == buffers.end())
           throw ExecutorError(
@@ -494,6 +496,7 @@ struct PassExecutor::Impl {
       recordPass(cmd, passes[i]);
       stamp(uint32_t(i + 1));
     }
+    if (writesBuffers()) hostBarrier(cmd);
     checkVk(vkEndCommandBuffer(cmd), "vkEndCommandBuffer");
     for (const PassResource& p : passes) {
       passCmds.push_back(beginCommands());
@@ -503,6 +506,21 @@ struct PassExecutor::Impl {
     }
     emptyCmd = beginCommands();
     checkVk(vkEndCommandBuffer(emptyCmd), "vkEndCommandBuffer");
+  }
+
+  bool writesBuffers() const {
+    for (const Pass& p : manifest.passes)
+      for (const Binding& b : p.bindings)
+        if (b.access == Access::StorageBufferReadWrite) return true;
+    return false;
+  }
+  // The shaders' buffer writes made visible to the host that reads them back (readBuffer).
+  static void hostBarrier(VkCommandBuffer c) {
+    VkMemoryBarrier b{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
+    b.srcAccessMask = VK_ACCESS_SHADER_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &b, 0, nullptr, 0,
+                         nullptr);
   }
 
   uint32_t queryCount() const { return 2 * (uint32_t(manifest.passes.size()) + 1); }
@@ -617,16 +635,25 @@ TimingResult PassExecutor::time(int warmup, const RunCount& runs, ClockChoice ch
     kinds.push_back(p.kind);
   }
   try {
-    const std::optional<CpuSample> before = sampleCpu();
-    TimingResult result = timeRuns(device, resolveClock(choice, cpu), impl_->hostClock, warmup, runs, names, kinds);
-    const std::optional<CpuSample> after = sampleCpu();
-    if (before && after) result.otherCpuShare = otherCpuShare(*before, *after);
-    return result;
+    return timeRuns(device, resolveClock(choice, cpu), impl_->hostClock, warmup, runs, names, kinds);
   } catch (const VulkanError&) {
     throw;
   } catch (const std::runtime_error& e) {
     throw ExecutorError(e.what());
   }
+}
+
+void PassExecutor::resetBuffers() {
+  for (const BufferDesc& desc : impl_->manifest.buffers)
+    std::memcpy(impl_->buffers.at(desc.name).mapped, desc.values.data(), desc.values.size() * sizeof(int32_t));
+}
+
+std::vector<int32_t> PassExecutor::readBuffer(const std::string& name) const {
+  const auto it = impl_->buffers.find(name);
+  if (it == impl_->buffers.end()) throw ExecutorError(fmt::format("read back: the manifest has no buffer '{}'", name));
+  std::vector<int32_t> values(it->second.size / sizeof(int32_t));
+  std::memcpy(values.data(), it->second.mapped, values.size() * sizeof(int32_t));
+  return values;
 }
 
 void PassExecutor::setHostClock(HostClock clock) { impl_->hostClock = std::move(clock); }

@@ -60,6 +60,10 @@ class PassExecutor {
   // The host clock timed runs read (default steadyHostClock()).
   void setHostClock(HostClock clock);
   HostImage download(const std::string& image, uint32_t level = 0, uint32_t layer = 0);
+  // Every manifest buffer back to its manifest values (the work counters to zero), and one
+  // buffer's words as the last run left them (host-visible memory, no copy on the device).
+  void resetBuffers();
+  std::vector<int32_t> readBuffer(const std::string& name) const;
 
   const Manifest& manifest() const;  // as run: each pass in its chosen form
   // The form each pass with several forms runs, manifest order (empty when none has forms).

@@ -1,9 +1,11 @@
 #include "runtime/executor/pass_forms.h"
 
 #include <fmt/core.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cstdlib>
+#include <stdexcept>
 #include <utility>
 
 #include "runtime/executor/pass_executor.h"  // ExecutorError
@@ -48,6 +50,15 @@ std::string passFormFromEnvironment() {
   return v && *v ? v : kPassFormAuto;
 }
 
+std::string checkedPassForm(const std::string& choice) {
+  const std::string value = choice.empty() ? passFormFromEnvironment() : choice;
+  const std::vector<std::string>& names = passFormNames();
+  if (value == kPassFormAuto || std::find(names.begin(), names.end(), value) != names.end()) return value;
+  throw std::invalid_argument(fmt::format("{} '{}' is not a pass form: {}, {}",
+                                          choice.empty() ? "SHADOWC_PASS_FORM" : "--pass-form", value, kPassFormAuto,
+                                          fmt::join(names, ", ")));
+}
+
 std::string unmetNeed(const FormNeeds& needs, const DeviceTraits& device) {
   if (device.subgroupSize < needs.subgroupSizeMin)
     return fmt::format("subgroup size {} or more (the device has {})", needs.subgroupSizeMin, device.subgroupSize);
@@ -78,7 +89,8 @@ const PassForm* autoForm(const Pass& pass, const std::vector<PassForm>& forms, c
 
 ChosenForms chooseForms(const Manifest& manifest, const DeviceTraits& device, const std::string& choice) {
   ChosenForms out{manifest, {}};
-  const bool automatic = choice.empty() || choice == kPassFormAuto;
+  const std::string checked = choice.empty() ? std::string(kPassFormAuto) : checkedPassForm(choice);
+  const bool automatic = checked == kPassFormAuto;
   for (Pass& pass : out.manifest.passes) {
     if (pass.forms.empty()) continue;
     const std::vector<PassForm> forms = formsOf(pass);

@@ -29,6 +29,10 @@ DeviceTraits deviceTraits(const VulkanContext& ctx);
 inline constexpr const char* kPassFormAuto = "auto";
 // The override the environment asks for: SHADOWC_PASS_FORM, else "auto".
 std::string passFormFromEnvironment();
+// `choice` ("" = the environment's) when it is "auto" or a form name the compiler gives a pass
+// (passFormNames()); otherwise throws std::invalid_argument naming where it came from and the
+// names there are, whatever the filter: a misspelt override must not time the default instead.
+std::string checkedPassForm(const std::string& choice);
 
 struct FormChoice {
   std::string pass, form, why;  // why: "auto, cpu device" or "override"

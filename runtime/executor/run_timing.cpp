@@ -122,7 +122,7 @@ bool wantsMore(const RunCount& count, const std::vector<double>& totals, double 
   if (!count.automatic) return n < std::max(1, count.runs);
   if (n < count.minRuns) return true;  // no interval yet; the cap bounds only what comes after
   if (n >= count.maxRuns) return false;
-  if (timingStats(totals).relativeHalfWidth() <= count.targetHalfWidth) return false;
+  if (timingStats(totals).relativeWiderSide() <= count.targetHalfWidth) return false;  // both sides within
   stoppedAtCap = spentMs >= count.capMs;
   return !stoppedAtCap;
 }
@@ -180,8 +180,8 @@ std::string clockSummary(const TimingResult& timing) {
 }
 
 std::string statsSummary(const TimingStats& s) {
-  return fmt::format("median {:.3f} ms [{:.3f}, {:.3f}] ({:.0f}%), min {:.3f}, p90 {:.3f}, cv {:.0f}%", s.medianMs,
-                     s.ciLowMs, s.ciHighMs, 100 * s.ciCoverage, s.minMs, s.p90Ms, 100 * s.cv);
+  return fmt::format("median {:.3f} ms [{:.3f}, {:.3f}] ({}), min {:.3f}, p90 {:.3f}, cv {:.0f}%", s.medianMs,
+                     s.ciLowMs, s.ciHighMs, coverageText(s.ciCoverage), s.minMs, s.p90Ms, 100 * s.cv);
 }
 
 }  // namespace shadowc::rt

@@ -62,7 +62,8 @@ struct RejectedRun {
 };
 
 // How many timed runs: a fixed count, or "auto": at least `minRuns`, then more until the median's
-// 95% interval is within `targetHalfWidth` of the median, or the runs have taken `capMs` on the
+// 95% interval is within `targetHalfWidth` of the median on both sides (TimingStats::
+// relativeWiderSide), or the runs have taken `capMs` on the
 // host clock, or `maxRuns` were accepted (docs/runtime.md "Timing statistics"). Implicit from an
 // int, which is a fixed count.
 struct RunCount {
@@ -133,7 +134,7 @@ TimingResult timeRuns(TimedDevice& device, TimingClock clock, const HostClock& n
 
 // "host clock, 0 rejected": the words validate and the benchmarks print after the run count.
 std::string clockSummary(const TimingResult& timing);
-// "median 1.234 ms [1.200, 1.260] (95%), min 1.190, p90 1.300, cv 3%": one line of a total's statistics.
+// "median 1.234 ms [1.200, 1.260] (97.8 %), min 1.190, p90 1.300, cv 3%": one line of a total's statistics.
 std::string statsSummary(const TimingStats& stats);
 
 }  // namespace shadowc::rt

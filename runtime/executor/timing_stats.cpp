@@ -1,5 +1,7 @@
 #include "runtime/executor/timing_stats.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -30,6 +32,19 @@ MedianRanks medianRanks(int n, double level) {
 }
 
 double TimingStats::relativeHalfWidth() const { return medianMs > 0 ? 0.5 * (ciHighMs - ciLowMs) / medianMs : 0; }
+double TimingStats::relativeWiderSide() const {
+  return medianMs > 0 ? std::max(medianMs - ciLowMs, ciHighMs - medianMs) / medianMs : 0;
+}
+
+std::string coverageText(double coverage) {
+  return fmt::format("{:g} %", std::floor(1000 * coverage + 1e-9) / 10);
+}
+
+std::string intervalLabel(const std::vector<double>& coverages) {
+  if (coverages.empty()) return "interval";
+  const auto [least, most] = std::minmax_element(coverages.begin(), coverages.end());
+  return (coverageText(*least) == coverageText(*most) ? "" : ">= ") + coverageText(*least) + " interval";
+}
 
 TimingStats timingStats(std::vector<double> v) {
   TimingStats s;

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <string>
 #include <vector>
 
 namespace shadowc::rt {
@@ -28,9 +29,20 @@ struct TimingStats {
   double cv = 0;                     // stddev / mean; 0 when the mean is 0
   double ciLowMs = 0, ciHighMs = 0;  // the median's interval (medianRanks)
   double ciCoverage = 0;             // what that interval covers: >= 0.95, or less for n < 6
-  // Half the interval's width relative to the median: the precision a time was measured to.
+  // Half the interval's width relative to the median.
   double relativeHalfWidth() const;
+  // The interval's wider side relative to the median, max(median - low, high - median) / median:
+  // how far the median may be off in the worse direction (what `--runs auto` narrows,
+  // docs/runtime.md "Automatic run count"); at least relativeHalfWidth, more when lopsided.
+  double relativeWiderSide() const;
 };
+
+// "93.7 %": a coverage floored to a tenth of a percent, so that a label never claims more than
+// the interval covers (n = 5: 0.9375; n = 2: "50 %").
+std::string coverageText(double coverage);
+// The heading of a column of intervals with these coverages: "96.8 % interval" when they all
+// cover the same, ">= 93.7 % interval" (the least) when they differ, "interval" for none.
+std::string intervalLabel(const std::vector<double>& coverages);
 
 // p90 is the nearest-rank percentile: the ceil(0.9 n)-th smallest sample. All zero when empty.
 TimingStats timingStats(std::vector<double> samplesMs);

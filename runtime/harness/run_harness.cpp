@@ -56,11 +56,26 @@ RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const Run
 
   const std::string output = setInputs(ex, passes, inputs);
 
-  // The last run leaves the outputs in place for the downloads.
+  // The last run leaves the outputs in place for the downloads, and an instrumented build's
+  // counts of that one run (the counters start from the manifest's zeros before it).
+  const bool counted = workCounterBuffer(passes.manifest) != nullptr;
   if (options.runs.any()) {
+    const CpuWindow window = openCpuWindow();  // the machine's load while timing (busy_machine.h)
     out.timing = ex.time(options.warmup, options.runs, options.clock);
+    out.timing->otherCpuShare = closeCpuWindow(window);
+    if (counted) {
+      ex.resetBuffers();
+      ex.run();
+    }
   } else {
-    for (int i = 0; i <= options.warmup; ++i) ex.run();
+    for (int i = 0; i <= options.warmup; ++i) {
+      if (counted && i == options.warmup) ex.resetBuffers();
+      ex.run();
+    }
+  }
+  if (counted) {
+    const BufferDesc& buffer = *workCounterBuffer(passes.manifest);
+    out.work = workCountsFromWords(passes.manifest, ex.readBuffer(buffer.name));
   }
   out.visibility = ex.download(output).channel(0);
   for (const std::string& name : options.downloads) out.images.emplace(name, ex.download(name));
@@ -81,17 +96,17 @@ std::vector<TimingResult> timeInterleaved(VulkanContext& ctx, const std::vector<
     for (int i = 0; i < warmup; ++i) e->run();
   // perRun[i][round] = that round's one-run timing of run i.
   std::vector<std::vector<TimingResult>> perRun(ex.size());
-  const std::optional<CpuSample> before = sampleCpu();
+  const CpuWindow window = openCpuWindow();
   for (int round = 0; round < rounds; ++round)
     for (size_t k = 0; k < ex.size(); ++k) {
       const size_t i = round % 2 ? ex.size() - 1 - k : k;
       perRun[i].push_back(ex[i]->time(0, 1, clock));
     }
-  const std::optional<CpuSample> after = sampleCpu();
+  const std::optional<double> otherShare = closeCpuWindow(window);
   std::vector<TimingResult> out(ex.size());
   for (size_t i = 0; i < ex.size(); ++i) {
     TimingResult& t = out[i];
-    if (before && after) t.otherCpuShare = otherCpuShare(*before, *after);
+    t.otherCpuShare = otherShare;
     t.warmup = warmup;
     t.runs = rounds;
     t.clock = perRun[i].front().clock;

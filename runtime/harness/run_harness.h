@@ -17,6 +17,7 @@
 #include "manifest/manifest.h"
 #include "runtime/executor/host_image.h"
 #include "runtime/executor/pass_executor.h"  // TimingResult
+#include "runtime/harness/work_counts.h"
 
 namespace shadowc::rt {
 
@@ -45,6 +46,10 @@ struct RunOutputs {
   std::map<std::string, HostImage> images;  // the requested downloads
   double pipelineCreateMs = 0;              // executor construction (pipelines, images, descriptors)
   std::vector<FormChoice> forms;            // the form each pass with several ran (pass_forms.h)
+  // An instrumented build's counts (work_counts.h): of exactly one run, the last, whatever the
+  // warm-up and timed runs before it added; nullopt for a plain build. A counted build's times
+  // include the counting: time the plain build, count the instrumented one.
+  std::optional<WorkCounts> work;
 };
 
 RunOutputs runPasses(VulkanContext& ctx, const CompiledPasses& passes, const RunInputs& inputs,

@@ -11,7 +11,7 @@
 #ifndef SHADOWC_CHEBYSHEV_GLSL
 #define SHADOWC_CHEBYSHEV_GLSL
 
-float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance) {
+float shadowc_chebyshev(float mean, float meanSq, float t, float minVariance) { SHADOWC_COUNT(SHADOWC_WORK_MOMENT_BOUNDS, 1)
   float variance = max(meanSq - mean * mean, minVariance);
   float dt = t - mean;
   float denom = variance + dt * dt;

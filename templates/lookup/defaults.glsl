@@ -265,4 +265,19 @@
 #define SHADOWC_NAIVE_STORE_RAW(v)
 #endif
 
+// ---- work counters (docs/manifest.md "Work counters"; compile --counters) --------------------
+// 1: the instrumented build, whose hooks counters.glsl defines. Every hook sits at the end of an
+// existing line and expands to nothing here, so a plain build's text is the same as without them.
+#ifndef SHADOWC_COUNTERS
+#define SHADOWC_COUNTERS 0
+#endif
+#ifndef SHADOWC_BINDING_WORK
+#define SHADOWC_BINDING_WORK 11
+#endif
+#if !SHADOWC_COUNTERS
+#define SHADOWC_COUNT(k, n)
+#define SHADOWC_WORK_BEGIN(receiver)
+#define SHADOWC_WORK_END
+#endif
+
 #endif

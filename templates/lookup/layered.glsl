@@ -11,7 +11,7 @@
 #ifndef SHADOWC_LAYERED_GLSL
 #define SHADOWC_LAYERED_GLSL
 
-float shadowc_split(int i) {
+float shadowc_split(int i) { SHADOWC_COUNT(SHADOWC_WORK_SPLIT_FETCHES, SHADOWC_LAYERS > 1 && SHADOWC_HAS_SPLITS_TEXTURE != 0)
 #if SHADOWC_LAYERS > 1
 #if SHADOWC_HAS_SPLITS_TEXTURE
   return texelFetch(shadowc_splitsTexture, ivec2(i, 0), 0).r;

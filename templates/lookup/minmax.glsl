@@ -21,12 +21,12 @@ vec2 shadowc_minMaxOfRect(ivec4 rect) {
   ivec2 last = max(textureSize(shadowc_minMaxPyramid, level) - 1, ivec2(0));
   ivec2 lo = clamp(rect.xy >> level, ivec2(0), last);
   ivec2 hi = clamp(rect.zw >> level, ivec2(0), last);
-  vec2 mm = texelFetch(shadowc_minMaxPyramid, lo, level).rg;
+  vec2 mm = texelFetch(shadowc_minMaxPyramid, lo, level).rg; SHADOWC_COUNT(SHADOWC_WORK_MINMAX_FETCHES, 1)
   // 2 x 2 cells below the top level; at the top level (max + 2) / 2^L + 1 <= 3 per axis for the
   // kernels the pyramid was sized for, at most the whole top level in any case.
   for (int y = lo.y; y <= hi.y; ++y)
     for (int x = lo.x; x <= hi.x; ++x) {
-      vec2 c = texelFetch(shadowc_minMaxPyramid, ivec2(x, y), level).rg;
+      vec2 c = texelFetch(shadowc_minMaxPyramid, ivec2(x, y), level).rg; SHADOWC_COUNT(SHADOWC_WORK_MINMAX_FETCHES, 1)
       mm = vec2(min(mm.x, c.x), max(mm.y, c.y));
     }
   return mm;

@@ -11,7 +11,7 @@
 
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM
 // Mean moments over an inclusive texel rectangle (VSSM sub-kernels).
-vec4 shadowc_rectMoments(ivec4 rect, int layer) {
+vec4 shadowc_rectMoments(ivec4 rect, int layer) { SHADOWC_COUNT(SHADOWC_WORK_MOMENT_FETCHES, SHADOWC_HAS_SAT == 0)
 #if SHADOWC_HAS_SAT
   return shadowc_summedMean(rect, layer);
 #else
@@ -34,7 +34,7 @@ vec4 shadowc_boxMoments(vec4 box, int layer) {
 
 // Mean moments of a kernel `w` texels wide centred at uv (rect = its clamped texel rectangle).
 // Without a SAT the fetch stays at the receiver's own uv, so bilinear filtering keeps it smooth.
-vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer) {
+vec4 shadowc_kernelMoments(vec2 uv, ivec4 rect, float w, int layer) { SHADOWC_COUNT(SHADOWC_WORK_MOMENT_FETCHES, SHADOWC_HAS_SAT == 0)
 #if SHADOWC_HAS_SAT && SHADOWC_SAT_FRACTIONAL
   return shadowc_summedMeanBox(shadowc_kernelBox(uv * vec2(shadowc_mapSize()), w), layer);
 #elif SHADOWC_HAS_SAT
@@ -90,7 +90,7 @@ float shadowc_filteredVisibility(vec2 uv, ivec4 rect, float w, float d) {
 float shadowc_momentsTechnique(shadowc_Receiver r) {
 #if SHADOWC_KERNEL_PENUMBRA
 #if SHADOWC_BLOCKER_KIND == SHADOWC_BLOCKER_SEARCH
-  float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r));
+  float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r)); SHADOWC_COUNT(SHADOWC_WORK_BLOCKERS_FOUND, zb >= 0.0)
   if (zb < 0.0) return 1.0;
   float w = shadowc_penumbraTexels(r, zb);
 #else

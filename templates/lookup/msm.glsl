@@ -28,7 +28,7 @@
 const vec4 shadowc_msmBiasTarget = vec4(0.5, 0.4075, 0.36125, 0.338125);
 
 // G of Algorithm 3 for power moments m and receiver depth zf, in [0, 1].
-float shadowc_msmShadow(vec4 m, float zf) {
+float shadowc_msmShadow(vec4 m, float zf) { SHADOWC_COUNT(SHADOWC_WORK_MOMENT_BOUNDS, 1)
   vec4 b = mix(m, shadowc_msmBiasTarget, SHADOWC_MSM_BIAS);  // step 1
   // Step 2: L21 = b1, L31 = b2, D22 = b2 - b1^2, L32 = (b3 - b1 b2) / D22,
   // D33 = b4 - b2^2 - L32^2 D22; forward substitution, scaling by D^-1, back substitution.

@@ -44,7 +44,7 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
 
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_PCSS
 float shadowc_pcss(shadowc_Receiver r) {
-  float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r));
+  float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r)); SHADOWC_COUNT(SHADOWC_WORK_BLOCKERS_FOUND, zb >= 0.0)
   if (zb < 0.0) return 1.0;
   return shadowc_pcf(r, shadowc_penumbraTexels(r, zb));
 }

@@ -45,4 +45,8 @@ layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_QUADTREE, std430) readonly b
 layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_SPLITS) uniform sampler2D shadowc_splitsTexture;
 #endif
 
+#if SHADOWC_COUNTERS
+#include "lookup/counters.glsl"
+#endif
+
 #endif

@@ -30,12 +30,12 @@ const float shadowc_satVarianceFloor = 0.0;
 #endif
 
 #if SHADOWC_SAT_KIND == SHADOWC_SAT_INT32
-uvec4 shadowc_summedCorner(int x, int y, int layer) {
+uvec4 shadowc_summedCorner(int x, int y, int layer) { SHADOWC_COUNT(SHADOWC_WORK_SAT_FETCHES, 1)
   uvec4 v = texelFetch(shadowc_summedArea, ivec3(max(x, 0), max(y, 0), layer), 0);
   return x < 0 || y < 0 ? uvec4(0u) : v;
 }
 #else
-vec4 shadowc_summedCorner(int x, int y, int layer) {
+vec4 shadowc_summedCorner(int x, int y, int layer) { SHADOWC_COUNT(SHADOWC_WORK_SAT_FETCHES, 1)
   vec4 v = texelFetch(shadowc_summedArea, ivec3(max(x, 0), max(y, 0), layer), 0);
   return x < 0 || y < 0 ? vec4(0.0) : v;
 }

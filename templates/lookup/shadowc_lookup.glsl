@@ -125,7 +125,7 @@ float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
 #else
   vec2 span = vec2(r.d);
 #endif
-  float early = shadowc_earlyOut(rect, span.x, span.y);
+  float early = shadowc_earlyOut(rect, span.x, span.y); SHADOWC_COUNT(SHADOWC_WORK_EARLY_OUTS, early >= 0.0)
   if (early >= 0.0) return early;
 #endif
 #if SHADOWC_TECHNIQUE == SHADOWC_TECHNIQUE_VSSM

@@ -120,7 +120,7 @@ void shadowc_uniformBandWalk(int den) {
   shadowc_WalkSum top[SHADOWC_UNIFORM_MAX_DEN + 1];  // the row of corners above the band
   for (int c = 0; c <= den; ++c) top[c] = shadowc_WalkSum(0);
   int yt = root.y;  // its texel edge
-  for (int r = 0; r < rows; ++r) {
+  for (int r = 0; r < rows; ++r) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1)
     // Row r of corners (row 0: the root's top edge, no cells above it), texel edge yb.
     int yb = root.y + int(uint(r * size.y) / uint(den));
     shadowc_WalkSum left = shadowc_summedCorner(root.x - 1, yb - 1, 0).xy;
@@ -177,7 +177,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   shadowc_WalkSum hi = shadowc_summedCorner(root.x + size.x - 1, root.y - 1, 0).xy;
   int yc = root.y;
   bool more = true;
-  for (int step = 0; step < 1 + den * (den + 1) && more; ++step) {
+  for (int step = 0; step < 1 + den * (den + 1) && more; ++step) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1)
     // Step 0: the root's bottom row. Step 1 + i * (den + 1) + r: row r of grid band i.
     bool grid = step > 0;
     int g = step - 1;
@@ -231,7 +231,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   bool more = true;
   const int limit = (1 + SHADOWC_UNIFORM_MAX_DEN * SHADOWC_UNIFORM_MAX_DEN) * SHADOWC_SAT_PIECES *
                         (SHADOWC_SAT_PIECES / 2 + 1) + SHADOWC_UNIFORM_MAX_DEN * (SHADOWC_UNIFORM_MAX_DEN / 2 + 1);
-  for (int step = 0; step < limit && more; ++step) {
+  for (int step = 0; step < limit && more; ++step) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1)
     bool grid = k == subs;
     // The box (box bands) and its pieces per axis.
     ivec4 box = k < 0 || !wideSubs ? ivec4(root, root + size) : ivec4(shadowc_subBox(ivec3(k % den, k / den, den)));
@@ -303,7 +303,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
 #endif
 #else
   float area = shadowc_boxArea(whole);
-  int rows = shadowc_rootNeedsWalk(shadowc_boxMoments(whole, 0), area, nonPlanarOnly) ? den : 0;
+  int rows = shadowc_rootNeedsWalk(shadowc_boxMoments(whole, 0), area, nonPlanarOnly) ? den : 0; SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1 + rows * den)
   for (int j = 0; j < rows; ++j)
     for (int i = 0; i < den; ++i) shadowc_qtLeafBox(shadowc_subBox(ivec3(i, j, den)));
 #endif

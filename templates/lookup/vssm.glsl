@@ -97,7 +97,7 @@ float shadowc_boxArea(vec4 box) { return (box.z - box.x) * (box.w - box.y); }
 // on two_planes light 4: 1430 M JIT instructions with the two returns, 1388 M without), so the
 // callers classify unconditionally and an absent cell is area 0, not a branch around the call.
 int shadowc_classify(vec4 m, float area, bool acceptNormal) {
-  bool there = area > 0.0;
+  bool there = area > 0.0; SHADOWC_COUNT(SHADOWC_WORK_KERNEL_BOXES, there)
   float variance = m.y - m.x * m.x;
   bool lit = there && m.x >= shadowc_vD && variance < SHADOWC_LIT_THRESHOLD;
   bool normal = there && acceptNormal && !lit && m.x < shadowc_vD;
@@ -177,8 +177,8 @@ void shadowc_markResolve(int b, vec4 box) { shadowc_qtResolveLeaf(b < 0 ? vec4(0
 #endif
 
 // Callbacks of the generated unrolled traversal (quadtree_tables.cpp).
-bool shadowc_qtVisit(ivec3 node) { return shadowc_qtClassifyBox(shadowc_qtBox(node)) == 1; }
-void shadowc_qtLeaf(ivec3 node) { shadowc_qtLeafBox(shadowc_qtBox(node)); }
+bool shadowc_qtVisit(ivec3 node) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1) return shadowc_qtClassifyBox(shadowc_qtBox(node)) == 1; }
+void shadowc_qtLeaf(ivec3 node) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1) shadowc_qtLeafBox(shadowc_qtBox(node)); }
 
 #include "lookup/uniform_walk.glsl"
 
@@ -224,7 +224,7 @@ bool shadowc_qtDefers(int height) {
 
 // One node n = (ix, iy, 2^level) of Algorithm 2 (L6-L26): classify it; a non-planar leaf is
 // resolved in place or marked for after the walk. True when the walk takes Child, else Next.
-bool shadowc_qtStep(ivec3 n, int height, bool defer, inout uint marksLo, inout uint marksHi) {
+bool shadowc_qtStep(ivec3 n, int height, bool defer, inout uint marksLo, inout uint marksHi) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1)
   vec4 box = shadowc_qtBox(n);
   bool nonPlanar = shadowc_qtClassifyBox(box) == 1;
   bool leaf = n.z >= (1 << height);
@@ -343,7 +343,7 @@ float shadowc_vssmVisibility(vec4 box, float d) {
 
 float shadowc_vssm(shadowc_Receiver r) {
   vec4 searchBox = shadowc_kernelBox(r.texel, shadowc_searchTexels(r));
-  float zb = shadowc_vssmBlocker(searchBox, r.d); SHADOWC_NAIVE_VSSM_RETURN(zb)
+  float zb = shadowc_vssmBlocker(searchBox, r.d); SHADOWC_NAIVE_VSSM_RETURN(zb) SHADOWC_COUNT(SHADOWC_WORK_BLOCKERS_FOUND, zb >= 0.0)
 #if SHADOWC_CONTACT
   // sec. 6.4: blocker and receiver nearly touch; the SAT is least precise there and the penumbra
   // is small, so a few bilinear PCF taps are both cheaper and more accurate. Detected on eq. 4's

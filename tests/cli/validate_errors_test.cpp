@@ -130,5 +130,30 @@ TEST(ValidateErrors, SiblingAPointFilterValidatesOnAPointScene) {
   expectValidates(file, "point_room");
 }
 
+// A form override no pass can have is refused for every filter, those without multi-form passes
+// (PCF) and those with them (an int32-SAT VSSM) alike, from the option and from the environment,
+// before the reference is traced (no "reference" progress line) and before any timing.
+TEST(ValidateErrors, UnknownPassFormBeforeAnyWork) {
+  for (const char* sample : {"pcf_grid5x5", "vssm_int32_sat"}) {
+    const std::string filter = (test::sourceDir() / "samples/filters" / (std::string(sample) + ".shadow")).string();
+    const test::CliResult option =
+        test::runShadowc("validate " + filter + " --scene two_planes --pass-form diagonal" + kSmall);
+    expectOneError(option, "--pass-form 'diagonal' is not a pass form: auto, serial, parallel");
+    EXPECT_EQ(option.err.find("reference"), std::string::npos) << sample << ":\n" << option.err;
+    const test::CliResult env =
+        test::runShadowc("validate " + filter + " --scene two_planes" + kSmall, "SHADOWC_PASS_FORM=sideways");
+    expectOneError(env, "SHADOWC_PASS_FORM 'sideways' is not a pass form");
+    EXPECT_EQ(env.err.find("reference"), std::string::npos) << sample << ":\n" << env.err;
+  }
+}
+
+TEST(ValidateErrors, SiblingAKnownPassFormValidates) {
+  const std::string filter = (test::sourceDir() / "samples/filters/vssm_int32_sat.shadow").string();
+  const test::CliResult r = test::runShadowc("validate " + filter + " --scene two_planes --pass-form serial" + kSmall);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("rmse"), std::string::npos) << r.out;
+  EXPECT_NE(r.out.find("sat_rows serial"), std::string::npos) << r.out;
+}
+
 }  // namespace
 }  // namespace shadowc

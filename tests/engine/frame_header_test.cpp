@@ -1,9 +1,14 @@
 // The installed integration header include/shadowc/frame.h: it compiles alone with
-// -Wall -Wextra -Werror (with and without GLM), every member's offset equals the std140 offset
-// glslang gives the same member of templates/frame_block.glsl, and the `frameReads` list of a
+// -Wall -Wextra -Werror (with and without GLM), every member's offset and size and the whole
+// size equal the std140 layout glslang gives templates/frame_block.glsl (read back from its
+// SPIR-V with SPIRV-Cross; planted copies with a member moved or resized fail), and the `frameReads` list of a
 // generated <filter>.h is exactly the set of block members the filter's shade pass reads
 // (its SPIR-V's access chains into the block). docs/integration.md "The frame block".
+#include <fmt/format.h>
+#include <fmt/ranges.h>
 #include <gtest/gtest.h>
+
+#include <spirv_cross/spirv_cross.hpp>
 
 #include <cstdlib>
 #include <filesystem>
@@ -68,24 +73,58 @@ TEST(FrameHeader, TheStandaloneCompileCanFail) {
             0);
 }
 
-// member name -> std140 offset of shadowc_FrameBlock, from the SPIR-V glslang emits for it.
-std::map<std::string, uint32_t> glslBlockOffsets(const std::string& shader) {
-  const IncludeResolver templates = templateIncludes();
+// shadowc_FrameBlock as glslang lays it out (std140) in the SPIR-V it emits, read back with
+// SPIRV-Cross: each member's offset and declared size, and the block's size.
+struct BlockLayout {
+  std::map<std::string, std::pair<uint32_t, uint32_t>> members;  // name -> (offset, size)
+  size_t size = 0;
+};
+BlockLayout glslBlock(const std::string& shader, const IncludeResolver& includes) {
   BackendOptions o;
   o.optimize = false;
-  const SpirvResult r = compileGlsl(shader, ShaderStage::Compute, "frame_block_probe.comp", templates, o);
+  const SpirvResult r = compileGlsl(shader, ShaderStage::Compute, "frame_block_probe.comp", includes, o);
   EXPECT_TRUE(r.ok) << r.log;
-  const std::string dis = disassembleSpirv(r.words);
-  std::smatch m;
-  std::map<uint32_t, std::string> names;
-  std::map<std::string, uint32_t> out;
-  const std::regex name(R"re(OpMemberName %shadowc_FrameBlock (\d+) "(\w+)")re");
-  const std::regex offset(R"(OpMemberDecorate %shadowc_FrameBlock (\d+) Offset (\d+))");
-  for (auto it = std::sregex_iterator(dis.begin(), dis.end(), name); it != std::sregex_iterator(); ++it)
-    names[uint32_t(std::stoul((*it)[1]))] = (*it)[2];
-  for (auto it = std::sregex_iterator(dis.begin(), dis.end(), offset); it != std::sregex_iterator(); ++it)
-    out[names.at(uint32_t(std::stoul((*it)[1])))] = uint32_t(std::stoul((*it)[2]));
+  BlockLayout out;
+  if (!r.ok) return out;
+  const spirv_cross::Compiler reflect(r.words);
+  for (const spirv_cross::Resource& ub : reflect.get_shader_resources().uniform_buffers) {
+    const spirv_cross::SPIRType& type = reflect.get_type(ub.base_type_id);
+    if (reflect.get_name(type.self) != "shadowc_FrameBlock") continue;
+    out.size = reflect.get_declared_struct_size(type);
+    for (uint32_t i = 0; i < type.member_types.size(); ++i)
+      out.members[reflect.get_member_name(type.self, i)] = {reflect.type_struct_member_offset(type, i),
+                                                            uint32_t(reflect.get_declared_struct_member_size(type, i))};
+  }
   return out;
+}
+
+// Where the C++ struct and a GLSL block disagree, one line each; empty when they agree on every
+// member's offset and size, the member set and the whole size.
+std::vector<std::string> layoutMismatches(const BlockLayout& glsl) {
+  std::vector<std::string> out;
+  if (glsl.members.size() != std::size(kFrameFields))
+    out.push_back(fmt::format("{} members in GLSL, {} in C++", glsl.members.size(), std::size(kFrameFields)));
+  for (const FrameField& f : kFrameFields) {
+    const auto it = glsl.members.find(f.name);
+    if (it == glsl.members.end()) {
+      out.push_back(std::string(f.name) + " is not in shadowc_FrameBlock");
+      continue;
+    }
+    if (it->second.first != f.offset)
+      out.push_back(fmt::format("{}: offset {} in GLSL, {} in C++", f.name, it->second.first, f.offset));
+    if (it->second.second != f.size)
+      out.push_back(fmt::format("{}: {} bytes in GLSL, {} in C++", f.name, it->second.second, f.size));
+  }
+  if (glsl.size != sizeof(ShadowcFrame))
+    out.push_back(fmt::format("block: {} bytes in GLSL, sizeof(ShadowcFrame) {}", glsl.size, sizeof(ShadowcFrame)));
+  return out;
+}
+
+// The template resolver with frame_block.glsl replaced by `text` (a planted copy of the block).
+IncludeResolver withFrameBlock(const std::string& text) {
+  return [base = templateIncludes(), text](const std::string& name) -> std::optional<std::string> {
+    return name == "frame_block.glsl" ? std::optional<std::string>(text) : base(name);
+  };
 }
 
 // A compute shader that declares the whole block (the cascaded form) and reads every member.
@@ -98,26 +137,30 @@ std::string blockProbe(const std::string& extraDefines) {
 }
 
 TEST(FrameHeader, EveryOffsetEqualsTheGlslBlocks) {
-  const auto glsl = glslBlockOffsets(blockProbe(""));
-  ASSERT_EQ(glsl.size(), std::size(kFrameFields)) << "a member on one side only";
-  for (const FrameField& f : kFrameFields) {
-    ASSERT_TRUE(glsl.count(f.name)) << f.name << " is not in shadowc_FrameBlock";
-    EXPECT_EQ(glsl.at(f.name), f.offset) << f.name;
-  }
-  // The block's size: the last member's offset plus its size is sizeof(ShadowcFrame).
-  EXPECT_EQ(kFrameFields[std::size(kFrameFields) - 1].offset + kFrameFields[std::size(kFrameFields) - 1].size,
-            sizeof(ShadowcFrame));
+  const BlockLayout glsl = glslBlock(blockProbe(""), templateIncludes());
+  ASSERT_FALSE(glsl.members.empty()) << "no shadowc_FrameBlock reflected: nothing compared";
+  EXPECT_EQ(layoutMismatches(glsl), std::vector<std::string>{});
 }
 
-// Sibling: a block laid out differently (a member moved) is caught by the same comparison.
+// Sibling: planted copies of templates/frame_block.glsl with a member moved (two swapped) and one
+// resized (the last array shortened: every offset the same, only sizes tell) are each caught.
 TEST(FrameHeader, TheOffsetComparisonCanFail) {
-  std::string probe = blockProbe("");
-  const std::map<std::string, uint32_t> glsl = glslBlockOffsets(probe);
-  std::map<std::string, uint32_t> moved = glsl;
-  std::swap(moved.at("mapInfo"), moved.at("screenInfo"));
-  int differ = 0;
-  for (const FrameField& f : kFrameFields) differ += moved.at(f.name) != f.offset;
-  EXPECT_EQ(differ, 2);
+  const std::optional<std::string> real = templateIncludes()("frame_block.glsl");
+  ASSERT_TRUE(real.has_value());
+  const std::string mapLine = "  vec4 mapInfo;", screenLine = "  vec4 screenInfo;", arrayLine = "  vec4 cascades[8];";
+  ASSERT_NE(real->find(mapLine), std::string::npos);
+  ASSERT_NE(real->find(screenLine), std::string::npos);
+  ASSERT_NE(real->find(arrayLine), std::string::npos);
+  std::string moved = *real;
+  moved.replace(moved.find(mapLine), mapLine.size(), "  vec4 SWAP;");
+  moved.replace(moved.find(screenLine), screenLine.size(), mapLine);
+  moved.replace(moved.find("  vec4 SWAP;"), 12, screenLine);
+  const std::vector<std::string> m = layoutMismatches(glslBlock(blockProbe(""), withFrameBlock(moved)));
+  EXPECT_EQ(m.size(), 2u) << fmt::format("{}", fmt::join(m, "\n"));
+  std::string resized = *real;
+  resized.replace(resized.find(arrayLine), arrayLine.size(), "  vec4 cascades[4];");
+  const std::vector<std::string> r = layoutMismatches(glslBlock(blockProbe(""), withFrameBlock(resized)));
+  EXPECT_EQ(r.size(), 2u) << fmt::format("{}", fmt::join(r, "\n"));  // cascades' size and the block's
 }
 
 // Members of shadowc_FrameBlock the shader's access chains reach (the first index after the block).

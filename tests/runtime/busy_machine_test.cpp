@@ -1,10 +1,15 @@
 // The busy check on planted /proc texts and planted statistics: other processes' share of the
 // CPUs is Δbusy − Δself over Δtotal (docs/runtime.md "Busy machine"), and the warning appears
-// exactly when a threshold is passed.
+// exactly when a threshold is passed; and the window the share is read over is never shorter than
+// kBusyWindowMs (jiffies are 10 ms: a shorter window moves in steps as large as the threshold),
+// reaching back to an earlier window's sample when there is one, waiting when there is not.
 #include "runtime/executor/busy_machine.h"
 
 #include <fmt/core.h>
 #include <gtest/gtest.h>
+
+#include <chrono>
+#include <thread>
 
 namespace shadowc::test {
 namespace {
@@ -46,6 +51,32 @@ TEST(BusyMachine, WarnsPastEitherThresholdAndOnlyThen) {
   rt::TimingStats spread = quiet;
   spread.cv = rt::kBusyCv * 2;
   EXPECT_NE(rt::busyWarning(spread, std::nullopt).find("vary by 40%"), std::string::npos);
+}
+
+double elapsedMs(std::chrono::steady_clock::time_point since) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - since).count();
+}
+
+TEST(BusyWindow, AShortWindowWithNothingToReachBackToWaitsOutTheRest) {
+  // Let every earlier sample of this process age past the reach first.
+  std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(rt::kBusyReachMs + 50));
+  const auto start = std::chrono::steady_clock::now();
+  double window = 0;
+  rt::closeCpuWindow(rt::openCpuWindow(), &window);
+  EXPECT_GE(window, rt::kBusyWindowMs);
+  EXPECT_GE(elapsedMs(start), rt::kBusyWindowMs) << "the close must wait when nothing is old enough";
+}
+
+TEST(BusyWindow, AShortWindowReachesBackToAnEarlierSampleInsteadOfWaiting) {
+  rt::openCpuWindow();  // an earlier window's opening, e.g. the previous sweep row's
+  std::this_thread::sleep_for(std::chrono::duration<double, std::milli>(rt::kBusyWindowMs + 50));
+  const auto start = std::chrono::steady_clock::now();
+  double window = 0;
+  rt::closeCpuWindow(rt::openCpuWindow(), &window);
+  EXPECT_GE(window, rt::kBusyWindowMs);
+  EXPECT_LE(window, rt::kBusyReachMs);
+  // Sibling of the test above: here nothing waited (well under the window; 2 cores may be busy).
+  EXPECT_LT(elapsedMs(start), rt::kBusyWindowMs / 2);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 
+#include <stdexcept>
 #include <string>
 
 #include "compiler/driver/driver.h"
@@ -114,7 +115,12 @@ TEST(PassForms, OverrideRunsTheNamedFormOrSaysWhyNot) {
   const ChosenForms forced = chooseForms(m, traits(FormDevice::Cpu), "parallel");
   EXPECT_EQ(chosen(forced), "sat_rows=parallel sat_columns=parallel ");
   EXPECT_EQ(forced.choices.front().why, "override");
-  EXPECT_THROW(chooseForms(m, traits(FormDevice::Cpu), "tiled"), ExecutorError);
+  // A name no pass has is refused whatever the manifest, before any pass is looked at.
+  EXPECT_THROW(chooseForms(m, traits(FormDevice::Cpu), "tiled"), std::invalid_argument);
+  Manifest plain = m;
+  for (Pass& p : plain.passes) p.forms.clear();
+  EXPECT_THROW(chooseForms(plain, traits(FormDevice::Cpu), "diagonal"), std::invalid_argument);
+  EXPECT_NO_THROW(chooseForms(plain, traits(FormDevice::Cpu), "serial"));
   for (Pass& p : m.passes)
     if (!p.forms.empty()) p.forms[0].needs.subgroupOperations = {"quad"};
   try {

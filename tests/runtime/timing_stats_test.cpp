@@ -84,5 +84,52 @@ TEST(TimingStats, EmptyIsAllZero) {
   EXPECT_EQ(s.ciCoverage, 0);
 }
 
+// The JSON round trip with a distinct non-zero value in every field, so that two fields written
+// under each other's names, or one dropped, cannot come back equal (all-zero stats could).
+TEST(TimingStats, JsonRoundTripKeepsEveryFieldApart) {
+  rt::TimingStats s;
+  s.n = 7;
+  s.minMs = 1.25;
+  s.medianMs = 2.5;
+  s.p90Ms = 3.75;
+  s.maxMs = 4.125;
+  s.meanMs = 2.625;
+  s.stddevMs = 0.375;
+  s.cv = 0.142857;
+  s.ciLowMs = 1.5;
+  s.ciHighMs = 3.5;
+  s.ciCoverage = 0.984375;
+  const std::vector<double> values = {double(s.n), s.minMs, s.medianMs, s.p90Ms, s.maxMs, s.meanMs,
+                                      s.stddevMs,  s.cv,    s.ciLowMs,  s.ciHighMs, s.ciCoverage};
+  for (size_t i = 0; i < values.size(); ++i)
+    for (size_t k = i + 1; k < values.size(); ++k) ASSERT_NE(values[i], values[k]) << i << " " << k;
+  const rt::TimingStats back = rt::timingStatsFromJson(rt::toJson(s));
+  EXPECT_EQ(back.n, s.n);
+  EXPECT_EQ(back.minMs, s.minMs);
+  EXPECT_EQ(back.medianMs, s.medianMs);
+  EXPECT_EQ(back.p90Ms, s.p90Ms);
+  EXPECT_EQ(back.maxMs, s.maxMs);
+  EXPECT_EQ(back.meanMs, s.meanMs);
+  EXPECT_EQ(back.stddevMs, s.stddevMs);
+  EXPECT_EQ(back.cv, s.cv);
+  EXPECT_EQ(back.ciLowMs, s.ciLowMs);
+  EXPECT_EQ(back.ciHighMs, s.ciHighMs);
+  EXPECT_EQ(back.ciCoverage, s.ciCoverage);
+  // Sibling: the same JSON with two names swapped reads back different values.
+  nlohmann::ordered_json swapped = rt::toJson(s);
+  std::swap(swapped["ci_low_ms"], swapped["ci_high_ms"]);
+  EXPECT_NE(rt::timingStatsFromJson(swapped).ciLowMs, s.ciLowMs);
+}
+
+// Coverage labels never claim more than the interval covers: floored to a tenth of a percent.
+TEST(TimingStats, IntervalLabelsSayTheCoverageTheyHave) {
+  EXPECT_EQ(rt::coverageText(rt::medianRanks(5).coverage), "93.7 %");  // 1 - 2/32 = 0.9375
+  EXPECT_EQ(rt::coverageText(rt::medianRanks(2).coverage), "50 %");
+  EXPECT_EQ(rt::coverageText(rt::medianRanks(10).coverage), "97.8 %");  // 1 - 22/1024 = 0.9785
+  EXPECT_EQ(rt::intervalLabel({0.9375, 0.9375}), "93.7 % interval");
+  EXPECT_EQ(rt::intervalLabel({0.978515625, 0.9375}), ">= 93.7 % interval");
+  EXPECT_EQ(rt::intervalLabel({}), "interval");
+}
+
 }  // namespace
 }  // namespace shadowc::test

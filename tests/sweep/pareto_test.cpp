@@ -3,7 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <limits>
+#include <sstream>
+
+#include "support/test_support.h"
+#include "sweep/plot.h"
 
 namespace shadowc::sweep {
 namespace {
@@ -67,15 +72,17 @@ Row timed(const std::string& name, double low, double ms, double high, double rm
 
 TEST(ParetoTies, OverlappingIntervalsTieInsteadOfOrdering) {
   // fast_coarse and slow_fine overlap on time: either may be the faster, and slow_fine is more
-  // accurate, so fast_coarse is tied with it. clear_loser's interval lies wholly above
-  // fast_coarse's and its error is worse: off for certain. cheapest lies wholly below all.
+  // accurate, so the two are tied, each naming the other (a tie is symmetric). clear_loser's
+  // interval lies wholly above fast_coarse's and its error is worse: off for certain. cheapest
+  // lies wholly below all.
   const std::vector<Row> rows = {timed("cheapest", 0.9, 1.0, 1.1, 0.2), timed("fast_coarse", 1.9, 2.0, 2.3, 0.1),
                                  timed("slow_fine", 2.1, 2.2, 2.5, 0.05), timed("clear_loser", 2.4, 2.6, 2.8, 0.15)};
   const std::vector<FrontierMark> m = frontierMarks(rows);
   EXPECT_EQ(m[0].membership, Membership::On);
   EXPECT_EQ(m[1].membership, Membership::Tied);
   EXPECT_EQ(m[1].tiedWith, (std::vector<size_t>{2}));
-  EXPECT_EQ(m[2].membership, Membership::On);
+  EXPECT_EQ(m[2].membership, Membership::Tied);
+  EXPECT_EQ(m[2].tiedWith, (std::vector<size_t>{1}));
   EXPECT_EQ(m[3].membership, Membership::Off);
   EXPECT_EQ(names(rows, frontiers(rows).at(0)), (std::vector<std::string>{"cheapest", "fast_coarse", "slow_fine"}));
 }
@@ -101,4 +108,59 @@ TEST(ParetoTies, ARowCertainlyBeatenIsOffEvenWhenItOverlapsAnother) {
 }
 
 }  // namespace
+// A tie is symmetric over many planted rows: whenever a names b, b names a, and both are Tied.
+TEST(ParetoTies, TiesAreSymmetric) {
+  std::vector<Row> rows;
+  for (int i = 0; i < 40; ++i) {
+    const double ms = 1.0 + 0.05 * ((i * 7) % 40), rmse = 0.01 + 0.002 * ((i * 13) % 40);
+    rows.push_back(timed("r" + std::to_string(i), ms - 0.03 * (i % 3), ms, ms + 0.04 * (i % 4), rmse));
+  }
+  const std::vector<FrontierMark> m = frontierMarks(rows);
+  size_t ties = 0;
+  for (size_t a = 0; a < rows.size(); ++a)
+    for (size_t b : m[a].tiedWith) {
+      ++ties;
+      EXPECT_EQ(m[a].membership, Membership::Tied) << rows[a].variant;
+      EXPECT_EQ(m[b].membership, Membership::Tied) << rows[b].variant;
+      EXPECT_NE(std::find(m[b].tiedWith.begin(), m[b].tiedWith.end(), a), m[b].tiedWith.end())
+          << rows[a].variant << " names " << rows[b].variant << " but not the other way";
+    }
+  EXPECT_GT(ties, 0u) << "no tie among the planted rows: nothing compared";
+}
+
+// The plot's frontier line runs through the frontier rows by median time and falls in RMSE: the
+// tied row slow_coarse (median above fast_fine's, RMSE above too) is drawn and numbered with the
+// frontier, but the line does not climb to it.
+TEST(ParetoPlot, TheFrontierLineFallsInRmse) {
+  Results res;
+  res.sweep = "t";
+  res.rows = {timed("fast_fine", 0.9, 1.0, 1.3, 0.02), timed("slow_coarse", 1.0, 1.2, 1.4, 0.03),
+              timed("slowest_exact", 2.0, 2.1, 2.2, 0.001)};
+  for (Row& r : res.rows) r.caseLabel = "case";
+  const std::vector<FrontierMark> m = frontierMarks(res.rows);
+  ASSERT_EQ(m[1].membership, Membership::Tied);  // fast_fine may beat it, none for certain
+  const auto dir = test::freshTempDir("pareto-plot");
+  writePlots(dir, res);
+  const std::string frontier = test::readFile(dir / "plots/case0_frontier.dat");
+  const std::string line = test::readFile(dir / "plots/case0_line.dat");
+  EXPECT_NE(frontier.find("slow_coarse"), std::string::npos) << frontier;
+  EXPECT_EQ(line.find("slow_coarse"), std::string::npos) << line;
+  EXPECT_NE(line.find("fast_fine"), std::string::npos) << line;
+  EXPECT_NE(line.find("slowest_exact"), std::string::npos) << line;
+  // The line's RMSE column falls from row to row.
+  std::istringstream in(line);
+  double last = 1e300;
+  int points = 0;
+  for (std::string l; std::getline(in, l);) {
+    if (l.empty() || l[0] == '#') continue;
+    std::istringstream f(l);
+    double ms = 0, rmse = 0;
+    f >> ms >> rmse;
+    EXPECT_LT(rmse, last) << l;
+    last = rmse;
+    ++points;
+  }
+  EXPECT_EQ(points, 2);
+}
+
 }  // namespace shadowc::sweep

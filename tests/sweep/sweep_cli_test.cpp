@@ -285,6 +285,62 @@ TEST(SweepCli, ShardsMergedEqualOneProcess) {
   EXPECT_TRUE(std::filesystem::exists(dir / "merged/report.html"));
 }
 
+// Every place that shows the intervals says the coverage the runs give (docs/sweep.md "Ties"):
+// [min, max] of 5 runs holds the median with probability 1 - 2^-4 = 93.75 %, of 2 runs 50 %, and
+// the terminal's heading, report.html and the plot's legend say so, never "95 %".
+TEST(SweepCli, EveryIntervalLabelSaysItsCoverage) {
+  for (const auto& [runs, label] : {std::pair<int, std::string>{5, "93.7 % interval"}, {2, "50 % interval"}}) {
+    std::string text = tinySweep();
+    const std::string two = "\"runs\": 2";
+    ASSERT_NE(text.find(two), std::string::npos);
+    text.replace(text.find(two), two.size(), "\"runs\": " + std::to_string(runs));
+    const auto dir = writeSweep("sweep-coverage-" + std::to_string(runs), text);
+    const test::CliResult r = runSweep(dir, "out");
+    ASSERT_EQ(r.code, 0) << r.err;
+    const std::string report = test::readFile(dir / "out/report.html");
+    const std::string plot = test::readFile(dir / "out/plots/case0.gp");
+    EXPECT_NE(r.out.find(label), std::string::npos) << runs << " runs:\n" << r.out;
+    EXPECT_NE(report.find(label), std::string::npos) << runs << " runs";
+    EXPECT_NE(plot.find("variants (" + label + " of the median time)"), std::string::npos) << plot;
+    for (const std::string* shown : {&r.out, &report, &plot})
+      EXPECT_EQ(shown->find("95%"), std::string::npos) << runs << " runs: a label claims 95 %";
+    ASSERT_TRUE(std::filesystem::exists(dir / "out/plots/case0.svg"));
+    EXPECT_NE(test::readFile(dir / "out/plots/case0.svg").find(label), std::string::npos) << "the drawn legend";
+  }
+}
+
+// The intervals survive a merge: shards that find the one-process run's rows in their cache
+// (its cache folder copied into theirs) merge into exactly its times, intervals and frontier
+// marks, compared as they are, nothing overwritten.
+TEST(SweepCli, ShardsMergedKeepTheOneProcessIntervals) {
+  const auto dir = writeSweep("sweep-shard-intervals", tinySweep());
+  ASSERT_EQ(runSweep(dir, "one").code, 0);
+  for (int i = 0; i < 2; ++i) {
+    const std::string shard = "s" + std::to_string(i);
+    std::filesystem::create_directories(dir / shard);
+    std::filesystem::copy(dir / "one/cache", dir / shard / "cache", std::filesystem::copy_options::recursive);
+    ASSERT_EQ(runSweep(dir, shard, "--shard " + std::to_string(i) + "/2").code, 0);
+  }
+  const test::CliResult m = test::runShadowc("sweep merge " + (dir / "s0").string() + " " + (dir / "s1").string() +
+                                             " -o " + (dir / "merged").string());
+  ASSERT_EQ(m.code, 0) << m.err;
+  const sweep::Results one = sweep::readResultsJson(dir / "one/results.json");
+  const sweep::Results merged = sweep::readResultsJson(dir / "merged/results.json");
+  EXPECT_EQ(results(dir / "s0")["stats"]["ran"], 0) << "the shard ran rows: its times are its own";
+  ASSERT_EQ(merged.rows.size(), one.rows.size());
+  for (size_t i = 0; i < one.rows.size(); ++i) {
+    ASSERT_GT(one.rows[i].total.n, 0) << one.rows[i].variant << ": no interval to compare";
+    EXPECT_EQ(merged.rows[i].totalMs, one.rows[i].totalMs) << one.rows[i].variant;
+    EXPECT_EQ(rt::toJson(merged.rows[i].total).dump(), rt::toJson(one.rows[i].total).dump()) << one.rows[i].variant;
+  }
+  EXPECT_EQ(sweep::frontiers(merged.rows), sweep::frontiers(one.rows));
+  const auto mergedMarks = sweep::frontierMarks(merged.rows), oneMarks = sweep::frontierMarks(one.rows);
+  for (size_t i = 0; i < one.rows.size(); ++i) {
+    EXPECT_EQ(mergedMarks[i].membership, oneMarks[i].membership) << one.rows[i].variant;
+    EXPECT_EQ(mergedMarks[i].tiedWith, oneMarks[i].tiedWith) << one.rows[i].variant;
+  }
+}
+
 }  // namespace
 }  // namespace shadowc
 

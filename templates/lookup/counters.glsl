@@ -1,0 +1,36 @@
+// counters.glsl — the work counters of the instrumented build (`shadowc compile --counters`,
+// docs/manifest.md "Work counters"). Each invocation adds into its own shadowc_work[] while the
+// lookup runs (the SHADOWC_COUNT hooks at the fetches, bounds and walk steps); the shade pass
+// adds its totals into the work_counters buffer once, at its end: one atomic add per nonzero
+// counter, not one per fetch. Every counter is a 64-bit sum kept as (low, high) words: a low
+// word that wraps carries one into the high word, so the totals stay exact at any screen size.
+// The planner defines SHADOWC_WORK_FIELDS and each SHADOWC_WORK_<NAME> index from its one list
+// (compiler/plan/work_counters.h).
+#ifndef SHADOWC_COUNTERS_GLSL
+#define SHADOWC_COUNTERS_GLSL
+
+layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_WORK, std430) buffer shadowc_WorkCounters {
+  uvec2 shadowc_workTotals[];
+};
+
+uint shadowc_work[SHADOWC_WORK_FIELDS];
+
+#define SHADOWC_COUNT(k, n) shadowc_work[k] += uint(n);
+#define SHADOWC_WORK_BEGIN(receiver) shadowc_workBegin(receiver);
+#define SHADOWC_WORK_END shadowc_workEnd();
+
+void shadowc_workBegin(bool receiver) {
+  for (int k = 0; k < SHADOWC_WORK_FIELDS; ++k) shadowc_work[k] = 0u;
+  shadowc_work[SHADOWC_WORK_RECEIVERS] = receiver ? 1u : 0u;
+}
+
+void shadowc_workEnd() {
+  for (int k = 0; k < SHADOWC_WORK_FIELDS; ++k) {
+    uint n = shadowc_work[k];
+    if (n == 0u) continue;
+    uint before = atomicAdd(shadowc_workTotals[k].x, n);
+    if (before + n < before) atomicAdd(shadowc_workTotals[k].y, 1u);  // the low word wrapped
+  }
+}
+
+#endif
