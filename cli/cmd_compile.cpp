@@ -100,8 +100,9 @@ int run(CompileArgs& a, CLI::App& sub) {
         "--generic with --emit cpp: the C++ header does not carry the parameter block yet (use manifest.json)");
   options.counters = a.counters;
   if (a.counters && kinds.count(driver::OutputKind::CppHeader))
-    return error("--counters with --emit cpp: the C++ header describes a filter to ship, the instrumented build "
-                 "is for measuring one (docs/manifest.md \"Work counters\")");
+    return error(
+        "--counters with --emit cpp: the C++ header describes a filter to ship, the instrumented build "
+        "is for measuring one (docs/manifest.md \"Work counters\")");
   for (driver::OutputKind k : {driver::OutputKind::Hlsl, driver::OutputKind::Msl, driver::OutputKind::CppHeader})
     if (kinds.count(k)) options.engineOutputs.insert(k);
   if (a.outputDir.empty())

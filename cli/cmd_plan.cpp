@@ -100,7 +100,7 @@ CommandRunner registerPlan(CLI::App& app) {
     if (o->screen == 0 || o->map == 0 || o->samples < 1 || !o->runs.any() || o->warmup < 0)
       throw std::invalid_argument("--screen, --map, --samples and --runs must be positive, --warmup >= 0");
     for (const std::string& s : o->scenes) (void)rt::loadScene(s);  // an unknown scene is one message, before any work
-    (void)rt::checkedPassForm("");  // so is a misspelt SHADOWC_PASS_FORM
+    (void)rt::checkedPassForm("");                                  // so is a misspelt SHADOWC_PASS_FORM
     auto log = [](const std::string& line) { fmt::print(stderr, "shadowc: {}\n", line); };
     const std::string command = commandLine();
     planning::CalibrationRequest c;

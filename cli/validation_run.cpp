@@ -135,8 +135,10 @@ int runValidation(const ValidationOptions& o) {
     if (!counted) return 1;
   }
   if (instrumented)
-    fmt::print(stderr, "shadowc: warning: '{}' is an instrumented build (compile --counters): its times include "
-               "the counting\n", o.filterPath);
+    fmt::print(stderr,
+               "shadowc: warning: '{}' is an instrumented build (compile --counters): its times include "
+               "the counting\n",
+               o.filterPath);
 
   // 2. Scene (its errors come before device errors), device, rasterized inputs and reference.
   rt::Scene loaded = rt::loadScene(o.scene);

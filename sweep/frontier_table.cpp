@@ -45,8 +45,8 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
     out +=
         fmt::format("{} {}: {} of {} rows on the frontier (time = median frame total, RMSE vs the Embree reference)\n",
                     allRows ? "trade-off" : "frontier", first.caseLabel, frontier.size(), members.size());
-    out += fmt::format("  {:>4}  {:<{}}  {:>10}  {:>19}  {:>9}  {}\n", "#", "variant", width, "total ms",
-                       interval, "rmse", "slowest passes (ms)");
+    out += fmt::format("  {:>4}  {:<{}}  {:>10}  {:>19}  {:>9}  {}\n", "#", "variant", width, "total ms", interval,
+                       "rmse", "slowest passes (ms)");
     size_t rank = 0;
     for (size_t i : shown) {
       const Row& r = res.rows[i];
@@ -57,8 +57,8 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
           (allRows ? std::string(onFrontier.count(i) ? "*" : " ") : fmt::format("{}", ++rank)) + (tied ? "=" : "");
       const std::string range =
           r.total.n > 0 ? fmt::format("[{:.3f}, {:.3f}]", r.total.ciLowMs, r.total.ciHighMs) : std::string("-");
-      out += fmt::format("  {:>4}  {:<{}}  {:>10.3f}  {:>19}  {:>9.5f}  {}\n", mark, r.variant, width, r.totalMs,
-                         range, r.metrics.rmse, topPasses(r));
+      out += fmt::format("  {:>4}  {:<{}}  {:>10.3f}  {:>19}  {:>9.5f}  {}\n", mark, r.variant, width, r.totalMs, range,
+                         r.metrics.rmse, topPasses(r));
     }
     if (allRows) out += "  (* = on the frontier: nothing else here is both faster and more accurate)\n";
   }

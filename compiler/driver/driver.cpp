@@ -51,8 +51,9 @@ bool engineOutputs(FilterEmitResult& emitted, const Options& options, std::strin
       return false;
   if (options.engineOutputs.count(OutputKind::CppHeader)) {
     if (options.counters) {
-      log += "error: the C++ header describes a filter to ship; the instrumented build (--counters) is for "
-             "measuring it (docs/manifest.md \"Work counters\"): compile it without the header\n";
+      log +=
+          "error: the C++ header describes a filter to ship; the instrumented build (--counters) is for "
+          "measuring it (docs/manifest.md \"Work counters\"): compile it without the header\n";
       return false;
     }
     std::map<std::string, std::string> spirv;

@@ -20,7 +20,7 @@ constexpr std::pair<const char*, const char*> kMacros[] = {
     {"sat", "SHADOWC_BINDING_SAT"},
     {"minmax", "SHADOWC_BINDING_MINMAX"},
     {"splits", "SHADOWC_BINDING_SPLITS"},
-    {"parameters", "SHADOWC_BINDING_PARAMETERS"},     // generic shaders (plan/generic_block.h)
+    {"parameters", "SHADOWC_BINDING_PARAMETERS"},    // generic shaders (plan/generic_block.h)
     {"quadtree_table", "SHADOWC_BINDING_QUADTREE"},  // `traversal: table` (plan/quadtree_tables.h)
     {"work_counters", "SHADOWC_BINDING_WORK"}};      // the instrumented build (plan/work_counters.h)
 

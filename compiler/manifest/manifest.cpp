@@ -41,13 +41,14 @@ constexpr std::array<std::pair<ImageRole, const char*>, 5> kRoles{{{ImageRole::I
                                                                    {ImageRole::InputPosition, "input_position"},
                                                                    {ImageRole::InputNormal, "input_normal"},
                                                                    {ImageRole::OutputVisibility, "output_visibility"}}};
-constexpr std::array<std::pair<Access, const char*>, 7> kAccess{{{Access::Sampled, "sampled"},
-                                                                 {Access::StorageRead, "storage_read"},
-                                                                 {Access::StorageWrite, "storage_write"},
-                                                                 {Access::StorageReadWrite, "storage_read_write"},
-                                                                 {Access::Uniform, "uniform"},
-                                                                 {Access::StorageBufferRead, "storage_buffer_read"},
-                                                                 {Access::StorageBufferReadWrite, "storage_buffer_read_write"}}};
+constexpr std::array<std::pair<Access, const char*>, 7> kAccess{
+    {{Access::Sampled, "sampled"},
+     {Access::StorageRead, "storage_read"},
+     {Access::StorageWrite, "storage_write"},
+     {Access::StorageReadWrite, "storage_read_write"},
+     {Access::Uniform, "uniform"},
+     {Access::StorageBufferRead, "storage_buffer_read"},
+     {Access::StorageBufferReadWrite, "storage_buffer_read_write"}}};
 constexpr std::array<std::pair<DispatchMode, const char*>, 5> kModes{{{DispatchMode::Texels, "texels"},
                                                                       {DispatchMode::Rows, "rows"},
                                                                       {DispatchMode::Columns, "columns"},

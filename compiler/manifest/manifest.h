@@ -59,7 +59,15 @@ struct ImageDesc {
 // StorageBufferReadWrite: a buffer the pass adds into (the instrumented build's work counters,
 // docs/manifest.md "Work counters"); the runtime resets it to its manifest values before a
 // counted run and reads it back after.
-enum class Access { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform, StorageBufferRead, StorageBufferReadWrite };
+enum class Access {
+  Sampled,
+  StorageRead,
+  StorageWrite,
+  StorageReadWrite,
+  Uniform,
+  StorageBufferRead,
+  StorageBufferReadWrite
+};
 struct Binding {
   uint32_t binding = 0;
   // image name, "frame" for the ShadowcFrame uniform buffer, "parameters" for the pass's

@@ -5,11 +5,11 @@
 #include <algorithm>
 #include <chrono>
 #include <deque>
-#include <mutex>
-#include <thread>
 #include <fstream>
 #include <iterator>
+#include <mutex>
 #include <sstream>
+#include <thread>
 #include <vector>
 
 namespace shadowc::rt {

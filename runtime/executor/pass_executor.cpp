@@ -27,14 +27,14 @@ uint32_t ceilDiv(uint32_t a, uint32_t b) { return (a + b - 1) / b; }
 VkDescriptorType descriptorType(Access a) {
   return a == Access::Uniform                                                    ? VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER
          : a == Access::StorageBufferRead || a == Access::StorageBufferReadWrite ? VK_DESCRIPTOR_TYPE_STORAGE_BUFFER
-         : isStorage(a)                   ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
-                                          : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+         : isStorage(a)                                                          ? VK_DESCRIPTOR_TYPE_STORAGE_IMAGE
+                        : VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
 }
 DescriptorKind descriptorKind(Access a) {
   return a == Access::Uniform                                                    ? DescriptorKind::UniformBuffer
          : a == Access::StorageBufferRead || a == Access::StorageBufferReadWrite ? DescriptorKind::StorageBuffer
-         : isStorage(a)                   ? DescriptorKind::StorageImage
-                                          : DescriptorKind::CombinedImageSampler;
+         : isStorage(a)                                                          ? DescriptorKind::StorageImage
+                                                                                 : DescriptorKind::CombinedImageSampler;
 }
 bool isBuffer(Access a) { return a == Access::StorageBufferRead || a == Access::StorageBufferReadWrite; }
 bool isImage(Access a) { return a != Access::Uniform && !isBuffer(a); }

@@ -36,9 +36,7 @@ double TimingStats::relativeWiderSide() const {
   return medianMs > 0 ? std::max(medianMs - ciLowMs, ciHighMs - medianMs) / medianMs : 0;
 }
 
-std::string coverageText(double coverage) {
-  return fmt::format("{:g} %", std::floor(1000 * coverage + 1e-9) / 10);
-}
+std::string coverageText(double coverage) { return fmt::format("{:g} %", std::floor(1000 * coverage + 1e-9) / 10); }
 
 std::string intervalLabel(const std::vector<double>& coverages) {
   if (coverages.empty()) return "interval";

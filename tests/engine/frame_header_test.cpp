@@ -8,14 +8,13 @@
 #include <fmt/ranges.h>
 #include <gtest/gtest.h>
 
-#include <spirv_cross/spirv_cross.hpp>
-
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <regex>
 #include <set>
+#include <spirv_cross/spirv_cross.hpp>
 #include <sstream>
 
 #include "backend/spirv_backend.h"

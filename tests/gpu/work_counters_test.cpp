@@ -112,8 +112,8 @@ TEST_F(WorkCountersTest, CountsAreTheSameInTwoRuns) {
     const auto second = rt::runOnScene(context(), *passes, scene, timed).outputs.work;
     ASSERT_TRUE(first && second) << sample;
     EXPECT_GT(first->receivers(), 0u) << sample;
-    EXPECT_EQ(first->totals, second->totals) << sample << ": " << rt::workFields(*first) << " vs "
-                                             << rt::workFields(*second);
+    EXPECT_EQ(first->totals, second->totals)
+        << sample << ": " << rt::workFields(*first) << " vs " << rt::workFields(*second);
   }
 }
 

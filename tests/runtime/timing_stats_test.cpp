@@ -99,7 +99,7 @@ TEST(TimingStats, JsonRoundTripKeepsEveryFieldApart) {
   s.ciLowMs = 1.5;
   s.ciHighMs = 3.5;
   s.ciCoverage = 0.984375;
-  const std::vector<double> values = {double(s.n), s.minMs, s.medianMs, s.p90Ms, s.maxMs, s.meanMs,
+  const std::vector<double> values = {double(s.n), s.minMs, s.medianMs, s.p90Ms,    s.maxMs,     s.meanMs,
                                       s.stddevMs,  s.cv,    s.ciLowMs,  s.ciHighMs, s.ciCoverage};
   for (size_t i = 0; i < values.size(); ++i)
     for (size_t k = i + 1; k < values.size(); ++k) ASSERT_NE(values[i], values[k]) << i << " " << k;

@@ -13,8 +13,8 @@
 #include <regex>
 #include <sstream>
 
-#include "sweep/results_io.h"
 #include "support/test_support.h"
+#include "sweep/results_io.h"
 
 namespace shadowc {
 namespace {
