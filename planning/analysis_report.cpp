@@ -15,6 +15,7 @@ nlohmann::ordered_json distJson(const Distribution& d) {
   nlohmann::ordered_json j;
   j["count"] = d.count;
   j["mean"] = d.mean;
+  j["p10"] = d.p10;
   j["p50"] = d.p50;
   j["p90"] = d.p90;
   j["p99"] = d.p99;
@@ -65,6 +66,7 @@ nlohmann::ordered_json toJson(const SceneStats& s) {
   j["search_texels_p99"] = s.searchTexelsP99;
   j["penumbra_texels"] = distJson(s.penumbraTexels);
   j["penumbra_below_1_5_texels"] = s.fractionPenumbraBelow(1.5);
+  j["map_for_p10_penumbra"] = {{"texels", SceneStats::kPenumbraTexelsWanted}, {"map_size", s.mapForPenumbraTexels()}};
   j["contact"] = {{"epsilon", s.contactEpsilon}, {"receivers", s.contact}, {"fraction", s.contactFraction()}};
   j["separation"] = distJson(s.separation);
   j["depth_clusters"] = {{"counts_1_2_3_4plus", s.clusterCounts}, {"multi_depth_fraction", s.multiDepthFraction()}};
@@ -104,7 +106,20 @@ std::string formatSummary(const SceneStats& s) {
                      pct(s.penumbra, s.receivers));
   out += fmt::format("blocker search region p99 {:.1f} texels\n\n", s.searchTexelsP99);
   out += histogram("penumbra width, texels", s.penumbraTexels, "texels", 2);
-  out += fmt::format("  {:.1f} % of penumbrae < 1.5 texels\n\n", 100.0 * s.fractionPenumbraBelow(1.5));
+  out += fmt::format("  {:.1f} % of penumbrae < 1.5 texels\n", 100.0 * s.fractionPenumbraBelow(1.5));
+  if (s.penumbraTexels.count > 0) {
+    const uint32_t wanted = s.mapForPenumbraTexels();
+    out += wanted == 0 ? fmt::format("  p10 penumbra 0 texels at {}^2 (contact): no map size widens it\n\n", s.mapSize)
+           : wanted == s.mapSize
+               ? fmt::format("  p10 penumbra {:.2f} texels at {}^2: the map resolves it ({:g} or more)\n\n",
+                             s.penumbraTexels.p10, s.mapSize, SceneStats::kPenumbraTexelsWanted)
+               : fmt::format(
+                     "  p10 penumbra {:.2f} texels at {}^2: a {}^2 map makes it {:g} texels (no filter "
+                     "widens a penumbra narrower than that: resolution does)\n\n",
+                     s.penumbraTexels.p10, s.mapSize, wanted, SceneStats::kPenumbraTexelsWanted);
+  } else {
+    out += "\n";
+  }
   out += fmt::format("contact  {:.2f} % of receivers within {:g} (normalized depth) of their nearest blocker\n",
                      100.0 * s.contactFraction(), s.contactEpsilon);
   out += histogram("blocker-receiver separation, normalized depth", s.separation, "", 4);

@@ -20,6 +20,7 @@ Distribution makeDistribution(std::vector<double> values, std::vector<double> ed
     for (double v : values) sum += v;
     d.mean = sum / double(values.size());
     auto q = [&](double p) { return values[std::min(values.size() - 1, size_t(p * double(values.size())))]; };
+    d.p10 = q(0.1);
     d.p50 = q(0.5);
     d.p90 = q(0.9);
     d.p99 = q(0.99);
@@ -98,6 +99,15 @@ int countClusters(std::vector<double>& depths, double gap) {
 double Distribution::fractionBelow(double value) const {
   if (samples.empty()) return 1.0;
   return double(std::lower_bound(samples.begin(), samples.end(), value) - samples.begin()) / double(samples.size());
+}
+
+uint32_t SceneStats::mapForPenumbraTexels(double texels) const {
+  const double p10 = penumbraTexels.p10;
+  if (penumbraTexels.count == 0 || p10 >= texels || mapSize == 0) return mapSize;
+  if (!(p10 > 0)) return 0;  // a zero-width p10 (contact): no map size widens it
+  uint64_t map = mapSize;
+  while (double(map) / mapSize * p10 < texels && map < (uint64_t(1) << 30)) map *= 2;
+  return uint32_t(map);
 }
 
 double SceneStats::fractionPenumbraBelow(double texels) const { return penumbraTexels.fractionBelow(texels); }

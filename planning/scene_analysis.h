@@ -22,7 +22,7 @@ namespace shadowc::planning {
 // the last bin takes the rest).
 struct Distribution {
   uint64_t count = 0;
-  double mean = 0, p50 = 0, p90 = 0, p99 = 0, max = 0;
+  double mean = 0, p10 = 0, p50 = 0, p90 = 0, p99 = 0, max = 0;
   std::vector<double> edges;                 // upper bin edges, ascending
   std::vector<uint64_t> counts;              // edges.size() + 1 bins
   double fractionBelow(double value) const;  // exact, from the kept samples
@@ -77,9 +77,17 @@ struct SceneStats {
   Distribution depthSlopePerTexel;  // |d(receiver depth)/d(texel)| along the map's x axis
 
   double fractionPenumbraBelow(double texels) const;  // over penumbra receivers (1 when none)
-  double contactFraction() const;                     // contact / receivers
-  double multiDepthFraction() const;                  // penumbra receivers with >= 2 clusters
-  double uniformFraction() const;                     // (lit + umbra) / receivers
+  // The map size at which the 10th-percentile penumbra spans `texels` texels: a penumbra's width
+  // in texels is its width in map uv times the map size, so it grows in proportion; the answer
+  // is this map size times the least power of two that gets there (a point light's atlas keeps
+  // its factor 3). This map size when it already does, or when there is no penumbra; 0 when the
+  // p10 is 0 texels (contact), which no map size widens. No filter
+  // widens a penumbra narrower than a texel or two into the right shape: resolution does.
+  uint32_t mapForPenumbraTexels(double texels = kPenumbraTexelsWanted) const;
+  static constexpr double kPenumbraTexelsWanted = 2;
+  double contactFraction() const;     // contact / receivers
+  double multiDepthFraction() const;  // penumbra receivers with >= 2 clusters
+  double uniformFraction() const;     // (lit + umbra) / receivers
 };
 
 SceneStats analyzeScene(const rt::PreparedScene& scene, const AnalysisOptions& options = {});

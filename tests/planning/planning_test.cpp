@@ -150,6 +150,33 @@ TEST(Analysis, SunPenumbraTakesTheOrthographicForm) {
   EXPECT_GT(std::abs(p50 - expected), 0.5 * expected);
 }
 
+// small_penumbra's penumbrae are a fraction of a texel at 256^2; the analysis names the map size at
+// which the 10th percentile spans 2 texels, and that is a claim about a measurement: analyzed
+// again at that size the p10 is 2 texels or more, and at half of it less (the least such
+// doubling). Sibling: two_planes' penumbrae are wide already, so its answer is its own map.
+TEST(Analysis, SmallPenumbraNamesTheMapSizeThatResolvesIt) {
+  const planning::SceneStats st =
+      planning::analyzeScene(*rt::prepareScene(context(), analysisSettings("small_penumbra")));
+  ASSERT_GT(st.penumbra, 20u) << "too few penumbra receivers to have a 10th percentile";
+  ASSERT_LT(st.penumbraTexels.p10, 2.0);
+  const uint32_t wanted = st.mapForPenumbraTexels();
+  ASSERT_GT(wanted, kMap);
+  auto p10At = [&](uint32_t map) {
+    rt::SceneSettings s = analysisSettings("small_penumbra");
+    s.map = map;
+    return planning::analyzeScene(*rt::prepareScene(context(), s)).penumbraTexels.p10;
+  };
+  EXPECT_GE(p10At(wanted), 2.0) << "analyzed at the named " << wanted << "^2";
+  EXPECT_LT(p10At(wanted / 2), 2.0) << "half of it already resolves the penumbra: not the least";
+  EXPECT_NE(planning::formatSummary(st).find(fmt::format("a {}^2 map makes it 2 texels", wanted)), std::string::npos)
+      << planning::formatSummary(st);
+  EXPECT_EQ(planning::toJson(st)["map_for_p10_penumbra"]["map_size"].get<uint32_t>(), wanted);
+  const planning::SceneStats wide =
+      planning::analyzeScene(*rt::prepareScene(context(), analysisSettings("two_planes")));
+  ASSERT_GE(wide.penumbraTexels.p10, 2.0);
+  EXPECT_EQ(wide.mapForPenumbraTexels(), kMap);
+}
+
 TEST(Analysis, ContactSceneHasContactAndSeveralDepths) {
   const rt::SceneSettings s = analysisSettings("contact");
   const planning::SceneStats st = planning::analyzeScene(*rt::prepareScene(context(), s));
