@@ -217,6 +217,23 @@ std::map<Feature, FeatureVerdict> featureVerdicts(const std::vector<SceneStats>&
   return v;
 }
 
+// When a scene's penumbrae are too narrow for its map, what a larger map would do: the error of an
+// unreachable bound then names the cure, resolution, that no filter can stand in for
+// (SceneStats::mapForPenumbraTexels; docs/planning.md "Unreachable bounds").
+std::string resolutionHint(const std::vector<SceneStats>& stats) {
+  const SceneStats* worst = nullptr;
+  for (const SceneStats& s : stats) {
+    const uint32_t wanted = s.mapForPenumbraTexels();
+    if (wanted > s.mapSize && (!worst || wanted > worst->mapForPenumbraTexels())) worst = &s;
+  }
+  if (!worst) return "";
+  return fmt::format(
+      "; the 10th-percentile penumbra on {} is {:.2f} texels at {}^2, narrower than any filter can shape: a "
+      "{}^2 map makes it {:g} texels (plan with --map {})",
+      worst->scene, worst->penumbraTexels.p10, worst->mapSize, worst->mapForPenumbraTexels(),
+      SceneStats::kPenumbraTexelsWanted, worst->mapForPenumbraTexels());
+}
+
 PlanResult plan(rt::VulkanContext& ctx, const PlanRequest& request, const PlanModel& model) {
   if (request.scenes.empty()) throw PlanError("give at least one --scene");
   if (request.log) request.log("preparing the scenes (rasterize, Embree reference, analysis)");
@@ -313,8 +330,9 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
     if (request.maxRmse && byRmse->worstRmse > *request.maxRmse)
       throw PlanError(
           fmt::format("--max-rmse {:g} is unreachable on {}: the best reachable bound is {:.4f} (variant {}, "
-                      "{:.2f} ms)",
-                      *request.maxRmse, sceneList(scenes), byRmse->worstRmse, byRmse->variant, byRmse->worstMs));
+                      "{:.2f} ms){}",
+                      *request.maxRmse, sceneList(scenes), byRmse->worstRmse, byRmse->variant, byRmse->worstMs,
+                      resolutionHint(scenes.stats)));
     throw PlanError(
         fmt::format("no variant meets --budget-ms {:g}{} on {}: the fastest is {} at {:.2f} ms (rmse {:.4f})",
                     *request.budgetMs, request.maxRmse ? fmt::format(" within --max-rmse {:g}", *request.maxRmse) : "",

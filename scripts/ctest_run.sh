@@ -20,7 +20,7 @@ run_ctest() {
   # "  12/1259 Test  #345: Suite.Name ......   Passed   12.34 sec": name and seconds.
   local slowest
   slowest=$(awk '/ Test +#[0-9]+: / { for (i = 1; i <= NF; ++i) if ($i ~ /^#[0-9]+:$/) n = $(i + 1);
-         if ($NF == "sec") printf "%10.2f s  %s\n", $(NF - 1), n }' "$log" | sort -rn | head -n 10)
+         if ($NF == "sec") printf "%10.2f s  %s\n", $(NF - 1), n }' "$log" | sort -rn | awk 'NR <= 10')
   rm -f "$log"
   printf '%s: the ten slowest tests of this run\n%s\n' "$name" "$slowest" | tee -a "${SHADOWC_SLOWEST_LOG:-/dev/null}"
   return "$rc"

@@ -13,6 +13,7 @@
 namespace shadowc::test {
 namespace {
 
+// Full size on purpose: the bounds are docs/accuracy.md's "VSSM targets" at 256² / 1024² / 16².
 constexpr uint32_t kScreen = 256, kMap = 1024;
 constexpr int kSamples = 16;
 

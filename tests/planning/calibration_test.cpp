@@ -144,6 +144,8 @@ TEST(CalibrationSweep, ModelIsFittedFromTheSweepRows) {
 // candidates include the cascaded ones, the point scene's no VSSM (E0450), and the report plans
 // each scene within its bound with a filter of its own light. Siblings: the spot sweep alone holds
 // no sun or point row, and the point scene's everything-on column is refused, not measured.
+// Its cost is the count, not the size: every candidate each light accepts, compiled and run once at
+// the smallest sizes (64² screen, 256² map, 4² samples, 1 run), which is the property checked.
 TEST(CalibrationSweep, EveryLightTypeIsSweptAndJoined) {
   const auto dir = test::freshTempDir("plan_calibration_lights");
   planning::CalibrationRequest request = tinyRequest();

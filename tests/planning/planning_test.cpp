@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <regex>
 #include <string>
 
 #include "driver/driver.h"
@@ -309,6 +310,23 @@ TEST(PlanCli, UnreachableBoundNamesTheBestReachable) {
             std::string::npos)
       << r.err;
   EXPECT_NE(r.err.find("(variant "), std::string::npos) << r.err;
+  // two_planes' penumbrae are wide at 256^2: no map size is named (the sibling of the test below).
+  EXPECT_EQ(r.err.find("10th-percentile penumbra"), std::string::npos) << r.err;
+}
+
+// On small_penumbra the bound is out of reach because the penumbrae are a fraction of a texel:
+// the message says which map size would resolve them (the analysis's, checked against a second
+// analysis in Analysis.SmallPenumbraNamesTheMapSizeThatResolvesIt). Sibling: the two_planes
+// message of the test above, whose penumbrae the map resolves, names no map size.
+TEST(PlanCli, UnreachableBoundNamesTheMapSizeThatResolvesThePenumbra) {
+  const test::CliResult r = test::runShadowc(
+      "plan --scene small_penumbra --max-rmse 0.00001 --screen 64 --map 256 --samples 4 --runs 1 --warmup 0 -o "
+      "/tmp/x.shadow");
+  EXPECT_EQ(r.code, 1);
+  const std::regex hint(R"(the 10th-percentile penumbra on small_penumbra is [0-9.]+ texels at 256\^2, narrower )"
+                        R"(than any filter can shape: a (\d+)\^2 map makes it 2 texels \(plan with --map \1\))");
+  std::smatch m;
+  EXPECT_TRUE(std::regex_search(r.err, m, hint)) << r.err;
 }
 
 TEST(PlanCli, UnknownSceneIsOneMessage) {

@@ -69,6 +69,8 @@ std::string measured(const sweep::Row& r) {
   return j.dump();
 }
 
+// Its ~13 s are Slurm's (the daemons, scheduling, sbatch --wait's polling), not the sweep's:
+// the rows are already the smallest that run (32² screen, 256² map, 2² samples, 2 runs).
 TEST_F(LocalSlurm, JobArrayShardsMergedEqualOneProcess) {
   const std::string f = (test::sourceDir() / "samples/filters").string();
   std::ofstream(dir_ / "sweep.json") << R"J({
