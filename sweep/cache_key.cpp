@@ -21,6 +21,7 @@ std::string cacheKey(const KeyInputs& in) {
     j["runs"] = in.runs.runs;
   j["warmup"] = in.warmup;
   j["device"] = in.device;
+  if (in.counters) j["counters"] = true;  // rows without counts keep the key they always had
   const std::string h = contentHash({EmittedFile{"sweep-row", j.dump()}});
   return h.substr(h.find(':') + 1);
 }

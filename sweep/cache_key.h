@@ -25,6 +25,7 @@ struct KeyInputs {
   rt::RunCount runs;
   int warmup = 0;
   std::string device;
+  bool counters = false;  // the row carries work counts (sweep_spec.h)
 };
 
 // 32 hex digits (XXH3-128 through emit/content_hash.h, the project's one hash).

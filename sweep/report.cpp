@@ -2,6 +2,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -57,23 +58,26 @@ details{margin:10px 0}summary{cursor:pointer;color:#2b5d8a}
 code{font-family:ui-monospace,Menlo,monospace;font-size:13px}
 )";
 
-std::string rowCells(const Row& r) {
+// `work`: the sweep counted (docs/manifest.md "Work counters"), so a column of counts per receiver.
+std::string rowCells(const Row& r, bool work) {
   std::string passes;
   for (const auto& p : r.passes) passes += fmt::format("{}{} {:.2f}", passes.empty() ? "" : ", ", p.name, p.medianMs);
   const std::string interval =
       r.total.n > 0 ? fmt::format("{:.3f}&ndash;{:.3f}", r.total.ciLowMs, r.total.ciHighMs) : std::string("&ndash;");
   return fmt::format(
-      "<td>{}</td><td class=\"num\">{:.3f}</td><td class=\"num\">{}</td><td class=\"num\">{:.5f}</td>"
-      "<td class=\"num\">{:.5f}</td><td class=\"num\">{:.4f}</td><td><code>{}</code></td>",
-      esc(r.variant), r.totalMs, interval, r.metrics.rmse, r.metrics.mae, r.metrics.maxAbsError, esc(passes));
+             "<td>{}</td><td class=\"num\">{:.3f}</td><td class=\"num\">{}</td><td class=\"num\">{:.5f}</td>"
+             "<td class=\"num\">{:.5f}</td><td class=\"num\">{:.4f}</td><td><code>{}</code></td>",
+             esc(r.variant), r.totalMs, interval, r.metrics.rmse, r.metrics.mae, r.metrics.maxAbsError, esc(passes)) +
+         (work ? fmt::format("<td><code>{}</code></td>", r.work ? esc(rt::workFields(*r.work)) : "&ndash;") : "");
 }
 
 // The rows' heading; `interval`: the label with the coverage the runs give (pareto.h).
-std::string rowHead(const std::string& interval) {
+std::string rowHead(const std::string& interval, bool work) {
   return fmt::format(
-      "<th>variant</th><th>total ms</th><th>{}</th><th>RMSE</th><th>MAE</th><th>max error</th>"
-      "<th>passes (median ms)</th>",
-      esc(interval));
+             "<th>variant</th><th>total ms</th><th>{}</th><th>RMSE</th><th>MAE</th><th>max error</th>"
+             "<th>passes (median ms)</th>",
+             esc(interval)) +
+         (work ? "<th>shade work per receiver (exact counts)</th>" : "");
 }
 
 // The rank cell of a frontier row: "3", or "3 =" when it is tied on time (docs/sweep.md "Ties").
@@ -92,6 +96,7 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
   const auto front = frontiers(res.rows);
   const std::vector<FrontierMark> marks = frontierMarks(res.rows);
   const std::string interval = intervalLabel(res.rows);  // with the coverage the runs give
+  const bool counted = std::any_of(res.rows.begin(), res.rows.end(), [](const Row& r) { return r.work.has_value(); });
   std::map<size_t, std::vector<size_t>> byCase;
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   std::string h = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
@@ -129,11 +134,12 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
       h += fmt::format("<img class=\"plot\" src=\"{}\" alt=\"time vs RMSE, {}\" width=\"760\" height=\"480\">\n",
                        esc(p->second), esc(first.caseLabel));
     h += fmt::format("<h3>Frontier</h3>\n<table class=\"frontier\" id=\"frontier-case{}\">\n<tr><th>#</th>{}</tr>\n", c,
-                     rowHead(interval));
+                     rowHead(interval, counted));
     size_t rank = 0;
     for (size_t i : frontier)
       h += fmt::format("<tr class=\"frontier-row\" data-case=\"{}\" data-key=\"{}\"><td>{}</td>{}</tr>\n",
-                       esc(first.caseLabel), res.rows[i].key, rankCell(++rank, marks[i]), rowCells(res.rows[i]));
+                       esc(first.caseLabel), res.rows[i].key, rankCell(++rank, marks[i]),
+                       rowCells(res.rows[i], counted));
     h += "</table>\n<div class=\"cards\">\n";
     rank = 0;
     for (size_t i : frontier) {
@@ -154,9 +160,10 @@ std::string reportHtml(const Results& res, const PlotFiles& plots) {
     h += "</div>\n";
     h += fmt::format(
         "<details><summary>all {} rows of this case</summary>\n<table class=\"all\">\n<tr><th></th>{}</tr>\n",
-        members.size(), rowHead(interval));
+        members.size(), rowHead(interval, counted));
     for (size_t i : members)
-      h += fmt::format("<tr><td>{}</td>{}</tr>\n", onFrontier.count(i) ? "&#9733;" : "", rowCells(res.rows[i]));
+      h +=
+          fmt::format("<tr><td>{}</td>{}</tr>\n", onFrontier.count(i) ? "&#9733;" : "", rowCells(res.rows[i], counted));
     h += "</table>\n</details>\n</section>\n";
   }
   if (const std::vector<ShaderPair> pairs = shaderPairs(res.rows); !pairs.empty()) {

@@ -5,11 +5,13 @@
 #include <cstddef>
 #include <cstdint>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "runtime/executor/timing_stats.h"
+#include "runtime/harness/work_counts.h"
 #include "runtime/metrics/metrics.h"
 
 namespace shadowc::sweep {
@@ -40,6 +42,7 @@ struct Row {
   std::string busyWarning;                  // rt::busyWarning of its timing: empty on a quiet machine
   int rejectedRuns = 0;                     // implausible readings left out (docs/runtime.md "Rejected runs")
   rt::Metrics metrics;
+  std::optional<rt::WorkCounts> work;  // the instrumented build's counts of one run ("counters": true)
   std::string device;
   std::string resultImage, errorImage, referenceImage;  // relative to the output folder
 };

@@ -58,6 +58,7 @@ struct Job {
 
 struct Compiled {
   std::optional<CompiledPasses> passes;
+  std::optional<CompiledPasses> counted;  // the instrumented build, when the sweep counts
   std::string contentHash;
   std::optional<Skipped> skipped;
 };
@@ -118,6 +119,12 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         if (r.ok && r.artifact) {
           out.passes = r.artifact->passes();
           out.contentHash = r.artifact->manifest.contentHash;
+          if (spec.counters) {
+            driver::Options counting = opt;
+            counting.counters = true;
+            const driver::Result c = driver::compileSource(v.text, v.label, counting);
+            if (c.ok && c.artifact) out.counted = c.artifact->passes();
+          }
         } else {
           std::string code;
           std::string message = firstError(r.diagnostics, &code);
@@ -165,9 +172,9 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
                                            checked[v.index].spec->mapSize)});
         continue;
       }
-      const std::string key =
-          cacheKey({checked[v.index].specJson, shaderKindName(v.shader), compiled.at(v.index).contentHash,
-                    scenes[c.index].hash, c.screen, c.map, spec.referenceSamples, spec.runs, spec.warmup, o.device});
+      const std::string key = cacheKey({checked[v.index].specJson, shaderKindName(v.shader),
+                                        compiled.at(v.index).contentHash, scenes[c.index].hash, c.screen, c.map,
+                                        spec.referenceSamples, spec.runs, spec.warmup, o.device, spec.counters});
       if (std::optional<Row> cached = readCachedRow(o.outDir, key)) {
         cached->variantIndex = v.index;  // the same measurement may sit at another place in a new sweep
         cached->caseIndex = c.index;
@@ -246,6 +253,9 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         row.clock = rt::toString(run.outputs.timing->clock);
         row.rejectedRuns = int(run.outputs.timing->rejected.size());
         row.metrics = run.metrics;
+        // One untimed run of the instrumented build: the counts of one frame (an instrumented
+        // build's times include the counting, so the times above are the plain build's).
+        if (comp.counted) row.work = rt::runOnScene(ctx, *comp.counted, **scene, {}).outputs.work;
         row.resultImage = fmt::format("images/{}-result.png", job.key);
         row.errorImage = fmt::format("images/{}-error.png", job.key);
         rt::writeVisibilityPng(o.outDir / row.resultImage, run.outputs.visibility, c.screen, c.screen);

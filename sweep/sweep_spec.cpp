@@ -227,9 +227,9 @@ SweepSpec parseSweepSpec(const std::string& jsonText, const std::string& label, 
   } catch (const ordered_json::exception& e) {  // well-formed but refused, e.g. a number beyond double
     throw SweepSpecError(fmt::format("{}: error: malformed JSON: {}", label, e.what()));
   }
-  r.checkKeys(
-      j, "",
-      {"name", "filters", "params", "scenes", "screen", "map", "reference_samples", "runs", "warmup", "shaders"});
+  r.checkKeys(j, "",
+              {"name", "filters", "params", "scenes", "screen", "map", "reference_samples", "runs", "warmup", "shaders",
+               "counters"});
   SweepSpec s;
   s.name = j.contains("name") ? r.string(j["name"], "name") : std::filesystem::path(label).stem().string();
   if (!j.contains("filters") || !j["filters"].is_array() || j["filters"].empty())
@@ -260,6 +260,10 @@ SweepSpec parseSweepSpec(const std::string& jsonText, const std::string& label, 
       s.runs = r.integer(j["runs"], "runs", 1, 1000);
   }
   if (j.contains("warmup")) s.warmup = r.integer(j["warmup"], "warmup", 0, 1000);
+  if (j.contains("counters")) {
+    if (!j["counters"].is_boolean()) r.fail("counters", "expected true or false");
+    s.counters = j["counters"].get<bool>();
+  }
   if (j.contains("shaders")) {
     const ordered_json& sh = j["shaders"];
     if (!sh.is_array() || sh.empty())

@@ -64,6 +64,9 @@ struct SweepSpec {
   rt::RunCount runs = 5;  // a count, or "auto" (run_timing.h RunCount)
   int warmup = 2;
   std::vector<ShaderKind> shaders{ShaderKind::Specialized};
+  // "counters": also run each row's instrumented build once and keep its work per receiver
+  // (docs/manifest.md "Work counters"); the times stay the plain build's.
+  bool counters = false;
 };
 
 // `label` names the text in messages; relative file paths resolve against `baseDir`.

@@ -56,12 +56,16 @@ nlohmann::ordered_json workJson(const WorkCounts& work) {
   nlohmann::ordered_json j;
   j["pass"] = work.pass;
   j["receivers"] = work.receivers();
-  auto& totals = j["totals"] = nlohmann::ordered_json::object();
-  auto& per = j["per_receiver"] = nlohmann::ordered_json::object();
+  j["fields"] = work.fields;  // the buffer's order, which a reader's unordered object would lose
+  // Built apart and moved in: an ordered_json object is a vector, so a reference to one member
+  // would dangle once the next is added.
+  nlohmann::ordered_json totals = nlohmann::ordered_json::object(), per = nlohmann::ordered_json::object();
   for (size_t k = 0; k < work.fields.size(); ++k) {
     totals[work.fields[k]] = work.totals[k];
     if (work.fields[k] != "receivers") per[work.fields[k]] = work.perReceiver(work.fields[k]);
   }
+  j["totals"] = std::move(totals);
+  j["per_receiver"] = std::move(per);
   return j;
 }
 
@@ -71,11 +75,22 @@ WorkCounts workFromJson(const nlohmann::json& j) {
     throw std::invalid_argument("work counts: expected an object with \"pass\" and \"totals\"");
   WorkCounts w;
   w.pass = j["pass"].get<std::string>();
-  for (const auto& [field, total] : j["totals"].items()) {
-    if (!total.is_number_unsigned()) throw std::invalid_argument("work counts: total '" + field + "' is not a count");
-    w.fields.push_back(field);
-    w.totals.push_back(total.get<uint64_t>());
+  std::vector<std::string> order;
+  if (j.contains("fields") && j["fields"].is_array()) {
+    for (const auto& f : j["fields"])
+      if (f.is_string()) order.push_back(f.get<std::string>());
+  } else {
+    for (const auto& [field, total] : j["totals"].items()) order.push_back(field);
   }
+  for (const std::string& field : order) {
+    const auto it = j["totals"].find(field);
+    if (it == j["totals"].end() || !it->is_number_unsigned())
+      throw std::invalid_argument("work counts: total '" + field + "' is missing or not a count");
+    w.fields.push_back(field);
+    w.totals.push_back(it->get<uint64_t>());
+  }
+  if (w.fields.size() != j["totals"].size())
+    throw std::invalid_argument("work counts: \"fields\" does not name every total");
   return w;
 }
 

@@ -36,7 +36,8 @@ WorkCounts workCountsFromWords(const Manifest& manifest, const std::vector<int32
 // "depth_fetches=25;sat_fetches=38.439": every nonzero field but the receivers, per receiver,
 // at most 6 significant digits (a CSV cell; the JSON carries the exact totals).
 std::string workFields(const WorkCounts& work);
-// {"pass": ..., "receivers": N, "totals": {field: total}, "per_receiver": {field: x}}.
+// {"pass": ..., "receivers": N, "fields": [in buffer order], "totals": {field: total},
+// "per_receiver": {field: x}}.
 nlohmann::ordered_json workJson(const WorkCounts& work);
 // The inverse of workJson (its "totals" and "pass"); throws std::invalid_argument on a bad shape.
 WorkCounts workFromJson(const nlohmann::json& j);

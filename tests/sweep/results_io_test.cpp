@@ -42,11 +42,15 @@ TEST(ResultsIo, JsonRoundTripAndCache) {
   Results res;
   res.sweep = "t";
   res.rows = {sample("k1", 1, 2.5, 0.1), sample("k2", 2, 1.25, 0.2)};
+  res.rows[0].work = rt::WorkCounts{"shade", {"receivers", "depth_fetches", "moment_bounds"}, {100, 2500, 7}};
   res.skipped = {{3, "bad", "E0416", "bad:1:1: error: x [E0416]"}};
   res.stats = {2, 0};
   const Results back = parseResultsJson(resultsJson(res), "r.json");
   ASSERT_EQ(back.rows.size(), 2u);
   EXPECT_EQ(rowToJson(back.rows[0]).dump(), rowToJson(res.rows[0]).dump());
+  ASSERT_TRUE(back.rows[0].work.has_value());  // the work counts come back field by field
+  EXPECT_EQ(*back.rows[0].work, *res.rows[0].work);
+  EXPECT_FALSE(back.rows[1].work.has_value());
   EXPECT_EQ(back.skipped[0].code, "E0416");
   const auto dir = test::freshTempDir("sweep-cache");
   EXPECT_FALSE(readCachedRow(dir, "k1"));

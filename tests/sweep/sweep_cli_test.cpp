@@ -309,6 +309,44 @@ TEST(SweepCli, EveryIntervalLabelSaysItsCoverage) {
   }
 }
 
+// "counters": true keeps each row's exact work beside its time (docs/sweep.md "Work counts"):
+// Poisson PCF reads one depth texel a tap, so pcf[taps=4] is 4 fetches a receiver and
+// pcf[taps=16] 16, in the JSON (totals = per receiver x receivers), the CSV and the report.
+// Sibling: the same sweep without the key carries no counts and no column.
+TEST(SweepCli, CountersKeepEachRowsExactWork) {
+  std::string text = tinySweep();
+  const std::string warm = "\"warmup\": 1";
+  ASSERT_NE(text.find(warm), std::string::npos);
+  text.replace(text.find(warm), warm.size(), warm + ", \"counters\": true");
+  const auto dir = writeSweep("sweep-counters", text);
+  const test::CliResult r = runSweep(dir, "out");
+  ASSERT_EQ(r.code, 0) << r.err;
+  const sweep::Results res = sweep::readResultsJson(dir / "out/results.json");
+  std::map<std::string, uint64_t> fetches;
+  for (const sweep::Row& row : res.rows) {
+    ASSERT_TRUE(row.work.has_value()) << row.variant;
+    ASSERT_GT(row.work->receivers(), 0u) << row.variant;
+    fetches[row.variant] = row.work->total("depth_fetches").value_or(0);
+    if (row.variant.rfind("pcf[", 0) == 0) {
+      const uint64_t taps = row.variant == "pcf[taps=4]" ? 4 : 16;
+      EXPECT_EQ(fetches[row.variant], taps * row.work->receivers()) << row.variant;
+    }
+  }
+  ASSERT_EQ(fetches.count("pcf[taps=4]") + fetches.count("pcf[taps=16]"), 2u);
+  const std::string csv = test::readFile(dir / "out/results.csv");
+  EXPECT_NE(csv.find(",work_per_receiver\n"), std::string::npos);
+  EXPECT_NE(csv.find("depth_fetches=16"), std::string::npos) << csv;
+  const std::string report = test::readFile(dir / "out/report.html");
+  EXPECT_NE(report.find("shade work per receiver"), std::string::npos);
+  EXPECT_NE(report.find("depth_fetches=4"), std::string::npos);
+  // Sibling: without "counters" nothing is counted.
+  const auto plain = writeSweep("sweep-no-counters", tinySweep());
+  ASSERT_EQ(runSweep(plain, "out").code, 0);
+  for (const sweep::Row& row : sweep::readResultsJson(plain / "out/results.json").rows)
+    EXPECT_FALSE(row.work.has_value()) << row.variant;
+  EXPECT_EQ(test::readFile(plain / "out/report.html").find("shade work per receiver"), std::string::npos);
+}
+
 // The intervals survive a merge: shards that find the one-process run's rows in their cache
 // (its cache folder copied into theirs) merge into exactly its times, intervals and frontier
 // marks, compared as they are, nothing overwritten.
