@@ -59,6 +59,7 @@ struct Job {
 struct Compiled {
   std::optional<CompiledPasses> passes;
   std::optional<CompiledPasses> counted;  // the instrumented build, when the sweep counts
+  bool countedTried = false;              // compiled (or failed) once: not again for the next case
   std::string contentHash;
   std::optional<Skipped> skipped;
 };
@@ -119,12 +120,6 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         if (r.ok && r.artifact) {
           out.passes = r.artifact->passes();
           out.contentHash = r.artifact->manifest.contentHash;
-          if (spec.counters) {
-            driver::Options counting = opt;
-            counting.counters = true;
-            const driver::Result c = driver::compileSource(v.text, v.label, counting);
-            if (c.ok && c.artifact) out.counted = c.artifact->passes();
-          }
         } else {
           std::string code;
           std::string message = firstError(r.diagnostics, &code);
@@ -207,7 +202,17 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
     for (const Job& job : pending) {
       const Variant& v = e.variants[job.variant];
       const Case& c = e.cases[job.caseIndex];
-      const Compiled& comp = compiled.at(job.variant);
+      Compiled& comp = compiled.at(job.variant);
+      // The instrumented build only for a variant that has a row to run (a cached row keeps its
+      // counts), once for all its cases.
+      if (spec.counters && !comp.countedTried) {
+        comp.countedTried = true;
+        driver::Options counting;
+        counting.generic = v.shader == ShaderKind::Generic;
+        counting.counters = true;
+        const driver::Result r = driver::compileSource(v.text, v.label, counting);
+        if (r.ok && r.artifact) comp.counted = r.artifact->passes();
+      }
       const std::string refImage = fmt::format("images/case{}-reference.png", c.index);
       if (preparedCase != c.index) {
         progress.note(fmt::format("preparing {} (raster, Embree reference {}x{} samples)", c.label,

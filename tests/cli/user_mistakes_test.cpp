@@ -65,6 +65,18 @@ TEST(UserMistakes, SiblingCompileOutWrites) {
   EXPECT_TRUE(std::filesystem::exists(dir / "manifest.json"));
 }
 
+// The instrumented build describes no filter to ship: with the C++ header it is one error, and
+// nothing is written. Sibling: the same build without the header writes its manifest.
+TEST(UserMistakes, CompileCountersWithTheCppHeaderIsOneError) {
+  const auto dir = test::freshTempDir("mistake-counters-cpp");
+  const test::CliResult r = test::runShadowc("compile " + kFilter + " --counters --emit spirv,cpp -o " + dir.string());
+  expectOneError(r, "--counters with --emit cpp");
+  EXPECT_FALSE(std::filesystem::exists(dir / "manifest.json"));
+  const test::CliResult counted = test::runShadowc("compile " + kFilter + " --counters -o " + dir.string());
+  EXPECT_EQ(counted.code, 0) << counted.err;
+  EXPECT_NE(test::readFile(dir / "manifest.json").find("\"work_counters\""), std::string::npos);
+}
+
 // --help lists the one spelling and hides the old one (which would only say its new name).
 TEST(UserMistakes, HelpShowsScreenNotSize) {
   for (const char* sub : {"validate", "demo", "plan", "analyze"}) {

@@ -37,14 +37,18 @@ inline std::string sampleSource(const std::string& name) {
   return readFile(sourceDir() / "samples" / "filters" / (name + ".shadow"));
 }
 
-// Compiles `source` once per process under `label`. Fails the test (fatal) when it does not compile.
+// Compiles `source` once per process under `label` (and `counters`: the instrumented build,
+// docs/manifest.md "Work counters", cached apart from the plain one). Fails the test (fatal)
+// when it does not compile.
 inline const CompiledFilter* compileFilterCached(const std::string& label, const std::string& source,
-                                                 bool optimize = true) {
+                                                 bool optimize = true, bool counters = false) {
   static std::map<std::string, std::unique_ptr<CompiledFilter>> cache;
-  auto it = cache.find(label);
+  const std::string key = counters ? label + " (counters)" : label;
+  auto it = cache.find(key);
   if (it != cache.end()) return it->second.get();
   driver::Options options;
   options.optimize = optimize;
+  options.counters = counters;
   const driver::Result compiled = driver::compileSource(source, label + ".shadow", options);
   if (!compiled.artifact) {
     ADD_FAILURE() << label << ": " << compiled.log;
@@ -53,7 +57,7 @@ inline const CompiledFilter* compileFilterCached(const std::string& label, const
   auto cf = std::make_unique<CompiledFilter>();
   cf->spec = compiled.artifact->spec;
   cf->passes = compiled.artifact->passes();
-  return (cache[label] = std::move(cf)).get();
+  return (cache[key] = std::move(cf)).get();
 }
 
 // A frame whose light view is the identity (world = light view), so crafted receivers have a

@@ -29,16 +29,8 @@ constexpr uint32_t kMap = 256;
 
 // `source` compiled as the instrumented build, once per label.
 const CompiledPasses* countedBuild(const std::string& label, const std::string& source) {
-  static std::map<std::string, std::unique_ptr<CompiledPasses>> cache;
-  if (auto it = cache.find(label); it != cache.end()) return it->second.get();
-  driver::Options options;
-  options.counters = true;
-  const driver::Result r = driver::compileSource(source, label + ".shadow", options);
-  if (!r.artifact) {
-    ADD_FAILURE() << label << ": " << r.log;
-    return nullptr;
-  }
-  return (cache[label] = std::make_unique<CompiledPasses>(r.artifact->passes())).get();
+  const CompiledFilter* f = compileFilterCached(label, source, /*optimize=*/true, /*counters=*/true);
+  return f ? &f->passes : nullptr;
 }
 
 // Every receiver counted `perReceiver` of `field`, exactly: total = perReceiver x receivers, and
