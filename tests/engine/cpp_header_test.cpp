@@ -13,7 +13,7 @@
 
 #include "emit/emit_support.h"
 #include "emit/filter_emitter.h"
-#include "shadowc_test_paths.h"
+#include "support/test_support.h"
 
 namespace shadowc {
 namespace {
@@ -100,7 +100,7 @@ int compileTu(const std::filesystem::path& dir, const std::string& header, const
               const std::string& tu) {
   std::ofstream(dir / header, std::ios::binary) << headerText;
   std::ofstream(dir / "check.cpp", std::ios::binary) << "#include \"" << header << "\"\n" << tu;
-  const std::string cmd = std::string(SHADOWC_CXX_COMPILER) + " -std=c++20 -fsyntax-only -Wall -Wextra -Werror -I" +
+  const std::string cmd = test::cxxCompiler() + " -std=c++20 -fsyntax-only -Wall -Wextra -Werror -I" +
                           (test::sourceDir() / "include").string() + " " + (dir / "check.cpp").string() + " 2>" +
                           (dir / "log.txt").string();
   return std::system(cmd.c_str());

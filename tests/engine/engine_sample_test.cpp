@@ -22,7 +22,7 @@
 #include "runtime/scene/frame_setup.h"
 #include "runtime/scene/scene.h"
 #include "runtime/vulkan/vulkan_context.h"
-#include "shadowc_test_paths.h"
+#include "support/test_support.h"
 
 namespace shadowc {
 namespace {
@@ -65,8 +65,8 @@ double worstDifference(const std::vector<float>& a, const std::vector<float>& b,
 
 TEST(EngineSample, RunsWithValidationOnAndItsShadowTermEqualsTheHarness) {
   const auto out = test::freshTempDir("engine-sample");
-  const std::string cmd = "SHADOWC_VALIDATION=1 " + std::string(SHADOWC_ENGINE_BINARY) + " " + out.string() + " " +
-                          kScene + " " + std::to_string(kScreen) + " " + std::to_string(kMap) + " 2>" +
+  const std::string cmd = "SHADOWC_VALIDATION=1 " + test::engineSampleBinary() + " " + out.string() + " " + kScene +
+                          " " + std::to_string(kScreen) + " " + std::to_string(kMap) + " 2>" +
                           (out / "stderr.txt").string();
   ASSERT_EQ(std::system(cmd.c_str()), 0) << test::readFile(out / "stderr.txt");
   const rt::Rgb8Image png = rt::readPng(out / "shaded.png");
@@ -132,7 +132,7 @@ struct EngineRun {
 };
 EngineRun runEngineIn(const std::string& tag, const std::string& args) {
   const auto cwd = test::freshTempDir(tag), logs = test::freshTempDir(tag + "-logs");
-  const std::string cmd = "cd " + cwd.string() + " && " + std::string(SHADOWC_ENGINE_BINARY) + " " + args + " >" +
+  const std::string cmd = "cd " + cwd.string() + " && " + test::engineSampleBinary() + " " + args + " >" +
                           (logs / "out.txt").string() + " 2>" + (logs / "err.txt").string();
   const int status = std::system(cmd.c_str());
   EngineRun r;

@@ -21,7 +21,7 @@
 #include "emit/emit_support.h"
 #include "emit/template_includes.h"
 #include "manifest/frame_uniforms.h"
-#include "shadowc_test_paths.h"
+#include "support/test_support.h"
 
 namespace shadowc {
 namespace {
@@ -39,9 +39,9 @@ fs::path scratch(const std::string& name) {
 int compileAlone(const std::string& name, const std::string& tu, const std::string& flags) {
   const fs::path dir = scratch(name);
   std::ofstream(dir / "check.cpp", std::ios::binary) << tu;
-  const std::string cmd = std::string(SHADOWC_CXX_COMPILER) + " -fsyntax-only -Wall -Wextra -Werror -pedantic " +
-                          flags + " -I" + (test::sourceDir() / "include").string() + " " +
-                          (dir / "check.cpp").string() + " 2>" + (dir / "log.txt").string();
+  const std::string cmd = test::cxxCompiler() + " -fsyntax-only -Wall -Wextra -Werror -pedantic " + flags + " -I" +
+                          (test::sourceDir() / "include").string() + " " + (dir / "check.cpp").string() + " 2>" +
+                          (dir / "log.txt").string();
   return std::system(cmd.c_str());
 }
 

@@ -22,7 +22,6 @@
 #include "runtime/harness/run_harness.h"
 #include "runtime/harness/scene_run.h"
 #include "runtime/metrics/metrics.h"
-#include "shadowc_test_paths.h"
 #include "support/test_support.h"
 #include "validation/stability/crafted_run.h"
 
@@ -104,7 +103,7 @@ inline rt::RunInputs craftedInputs(uint32_t map, uint32_t w, uint32_t h, const S
 
 // Reference cache next to the shadowc binary (the build dir), never the user's cache.
 inline std::filesystem::path referenceCacheDir() {
-  return std::filesystem::path(SHADOWC_BINARY).parent_path() / "accuracy-reference-cache";
+  return std::filesystem::path(test::shadowcBinary()).parent_path() / "accuracy-reference-cache";
 }
 
 // One rasterized scene with its Embree reference, prepared once per process per key.

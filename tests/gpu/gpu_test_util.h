@@ -14,7 +14,7 @@
 
 #include "backend/spirv_backend.h"
 #include "runtime/executor/host_image.h"
-#include "shadowc_source_dir.h"
+#include "support/test_support.h"
 
 namespace shadowc::test {
 
@@ -39,7 +39,7 @@ inline std::vector<float> craftedDepth(uint32_t n, uint64_t seed = 0x9E3779B97F4
 // CompiledPasses::files. A compile error fails the test (the executor then sees no module).
 inline std::string computeSpirv(const std::string& name, const std::string& glsl) {
   const IncludeResolver includes = [](const std::string& file) -> std::optional<std::string> {
-    std::ifstream in(std::filesystem::path(SHADOWC_SOURCE_DIR) / "templates" / file);
+    std::ifstream in(test::sourceDir() / "templates" / file);
     if (!in) return std::nullopt;
     return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   };

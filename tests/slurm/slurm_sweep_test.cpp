@@ -9,7 +9,6 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "shadowc_test_paths.h"
 #include "support/test_support.h"
 #include "sweep/pareto.h"
 #include "sweep/results_io.h"
@@ -95,7 +94,7 @@ TEST_F(LocalSlurm, JobArrayShardsMergedEqualOneProcess) {
   const long waitS = 2 * 2 * (oneS + 1) + 60 + 32;
   int code = 0;
   const std::string sbatch =
-      shell("SLURM_CONF=" + conf_ + " SHADOWC=" + SHADOWC_BINARY + " timeout " + std::to_string(waitS) +
+      shell("SLURM_CONF=" + conf_ + " SHADOWC=" + test::shadowcBinary() + " timeout " + std::to_string(waitS) +
                 " sbatch --array=0-1 --wait -o " + (dir_ / "task-%a.log").string() + " " +
                 (test::sourceDir() / "scripts/slurm/sweep.sbatch").string() + " " + spec + " " +
                 (dir_ / "shards").string() + " 2>&1",

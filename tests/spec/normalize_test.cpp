@@ -4,7 +4,6 @@
 
 #include <cmath>
 
-#include "shadowc_source_dir.h"
 #include "spec/load_filter.h"
 #include "spec/precision.h"
 #include "spec/print_filter.h"
@@ -245,9 +244,9 @@ TEST(SpecJson, FixedKeyOrderAndEveryField) {
 }
 
 TEST(SpecJson, GoldenForTheDesignExample) {
-  const LoadResult r = loadFilterFile(std::string(SHADOWC_SOURCE_DIR) + "/samples/filters/vssm_adaptive.shadow");
+  const LoadResult r = loadFilterFile((test::sourceDir() / "samples/filters/vssm_adaptive.shadow").string());
   ASSERT_TRUE(r.spec);
-  const std::string golden = std::string(SHADOWC_SOURCE_DIR) + "/tests/spec/golden/vssm_adaptive.spec.json";
+  const std::string golden = (test::sourceDir() / "tests/spec/golden/vssm_adaptive.spec.json").string();
   const std::string diff = test::compareGolden(golden, specToJson(*r.spec).dump(2) + "\n");
   EXPECT_TRUE(diff.empty()) << diff;
 }

@@ -16,6 +16,9 @@
 namespace shadowc::test {
 
 std::filesystem::path sourceDir() { return SHADOWC_SOURCE_DIR; }
+std::string shadowcBinary() { return SHADOWC_BINARY; }
+std::string engineSampleBinary() { return SHADOWC_ENGINE_BINARY; }
+std::string cxxCompiler() { return SHADOWC_CXX_COMPILER; }
 
 std::filesystem::path freshTempDir(const std::string& tag) {
   static std::atomic<int> counter{0};
@@ -59,7 +62,7 @@ std::string compareGolden(const std::filesystem::path& golden, const std::string
 
 CliResult runShadowc(const std::string& args, const std::string& env) {
   const auto errFile = freshTempDir("cli-stderr") / "stderr";
-  const std::string cmd = env + (env.empty() ? "" : " ") + SHADOWC_BINARY + " " + args + " 2>" + errFile.string();
+  const std::string cmd = env + (env.empty() ? "" : " ") + shadowcBinary() + " " + args + " 2>" + errFile.string();
   CliResult r;
   FILE* p = ::popen(cmd.c_str(), "r");
   if (!p) return r;

@@ -6,7 +6,13 @@
 
 namespace shadowc::test {
 
+// The build's paths, compiled into this one file (test_support.cpp) only: a test file that wrote
+// them in through the generated headers would be compiled differently in every clone, and a
+// compiler cache shared by clones (scripts/ccache.sh) could never hit it.
 std::filesystem::path sourceDir();                           // the repository root
+std::string shadowcBinary();                                 // the shadowc executable
+std::string engineSampleBinary();                            // samples/engine's executable
+std::string cxxCompiler();                                   // the project's C++ compiler
 std::filesystem::path freshTempDir(const std::string& tag);  // empty, unique per test
 std::string readFile(const std::filesystem::path& p);
 

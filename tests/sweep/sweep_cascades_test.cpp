@@ -18,7 +18,6 @@
 #include "runtime/harness/scene_run.h"
 #include "runtime/scene/cascade_setup.h"
 #include "runtime/vulkan/vulkan_context.h"
-#include "shadowc_test_paths.h"
 #include "support/test_support.h"
 #include "sweep/sweep_run.h"
 #include "sweep/sweep_spec.h"
@@ -60,7 +59,7 @@ TEST(SweepCascades, CascadedRowsMatchTheHarnessMeasurement) {
   const auto dir = test::freshTempDir("sweep-cascades");
   // The reference cache the GPU tests use (next to the binary), so cascades_test's trace is reused.
   setenv("SHADOWC_CACHE_DIR",
-         (std::filesystem::path(SHADOWC_BINARY).parent_path() / "accuracy-reference-cache").c_str(), 1);
+         (std::filesystem::path(test::shadowcBinary()).parent_path() / "accuracy-reference-cache").c_str(), 1);
   const sweep::SweepSpec spec = sweep::parseSweepSpec(sweepJson(), "cascades.json", dir);
   sweep::SweepOptions o;
   o.outDir = dir / "out";
