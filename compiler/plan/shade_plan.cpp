@@ -180,6 +180,9 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   defReal("SHADOWC_CONTACT_EPSILON", s.contact.epsilon);
   defBool("SHADOWC_EARLY_OUT", s.earlyOutMinMax);
   defBool("SHADOWC_BACKFACE_SHADOWED", s.backfaceShadowed);
+  // Form-factor weights (kernel.glsl): a spot light's only; defined only when on, so unweighted
+  // filters emit what they did.
+  if (s.formFactorWeights && !sun && !cube) defBool("SHADOWC_WEIGHTED", true);
   // The early out must cover the blur footprint too (shadowc_lookup.glsl, shadowc_influenceRect).
   if (s.earlyOutMinMax && moments && s.prefilter.blur != BlurKind::None && s.prefilter.blurRadius > 0)
     defInt("SHADOWC_EARLY_OUT_GROW", s.prefilter.blurRadius);

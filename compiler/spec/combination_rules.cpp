@@ -88,6 +88,7 @@ enum class Caret {
   Fallback,
   Contact,
   Bleeding,
+  Weights,
   Bias,
   KernelElseStorage,         // the kernel setting when written, else storage
   LayersElseRepresentation,  // the `layers:` value when written, else the representation
@@ -277,6 +278,22 @@ const Rule kRules[] = {
     {DiagId::noEffect, Caret::Bleeding,
      [](const Facts& f) { return f.moments && !f.chebyshev && !f.msm() && f.s.moments.bleedingReduction > 0; },
      [](const Facts&, Args& a) { push(a, "bleeding", "only Chebyshev warps (linear, evsm2, evsm4) and msm bleed"); }},
+    // Form-factor weights (docs/dsl.md "weights") need taps or sub-kernels that stand for parts of
+    // a spot light.
+    {DiagId::noEffect, Caret::Weights,
+     [](const Facts& f) { return f.s.formFactorWeights && f.s.light.type != LightType::Spot; },
+     [](const Facts&, Args& a) {
+       push(a, "weights", "form-factor weights are built for spot lights; a sun's cap and a point light's sphere are weighed uniformly");
+     }},
+    {DiagId::noEffect, Caret::Weights,
+     [](const Facts& f) {
+       return f.s.formFactorWeights && f.s.light.type == LightType::Spot && f.moments &&
+              f.s.blocker.kind != BlockerKind::Search &&
+              (!f.vssm() || (f.s.kernel.subdivision == Subdivision::None && f.s.blocker.subdivision == Subdivision::None));
+     },
+     [](const Facts&, Args& a) {
+       push(a, "weights", "one filtered box stands for the whole light; weigh sub-kernels with kernel uniform(n) or quadtree");
+     }},
     {DiagId::zeroMinVariance, Caret::MinVariance,
      [](const Facts& f) { return f.moments && f.chebyshev && f.r.minVariance && f.s.moments.minVariance == 0; }},
     {DiagId::msmSmallBias, Caret::MomentBias,
@@ -330,6 +347,8 @@ Span caretOf(Caret c, const Facts& f, const dsl::FilterDecl& filter) {
       return settingSpan(r.contact, filter);
     case Caret::Bleeding:
       return settingSpan(r.bleeding, filter);
+    case Caret::Weights:
+      return settingSpan(r.weights, filter);
     case Caret::Bias:
       return settingSpan(r.bias, filter);
     case Caret::KernelElseStorage:

@@ -217,6 +217,8 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
   j["contact"] = J{{"enabled", s.contact.enabled}, {"n", s.contact.n}, {"epsilon", s.contact.epsilon}};
   j["early_out_minmax"] = s.earlyOutMinMax;
   j["backface"] = s.backfaceShadowed ? "shadowed" : "filtered";
+  // Written only when weighted, so every other manifest stays byte-identical.
+  if (s.formFactorWeights) j["weights"] = "form_factor";
   j["map_size"] = s.mapSize;
   // Written only when cascaded, so every other manifest stays byte-identical.
   if (s.cascades.count > 0)

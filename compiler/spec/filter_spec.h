@@ -213,6 +213,10 @@ struct FilterSpec {
   // shadowing term's value there (docs/scenes.md; one dot product before any fetch); `filtered`
   // runs the filter for it too (two-sided surfaces whose normal may face away from the light).
   bool backfaceShadowed = true;
+  // `weights form_factor`: every tap, sub-kernel and quadtree leaf counts with the form factor
+  // (cos_receiver cos_light / r^2) of the light patch it stands for, as the reference weighs the
+  // light; `uniform` counts the visible fraction of the light (docs/dsl.md "weights").
+  bool formFactorWeights = false;
   CascadeSpec cascades;  // a sun only (checker, light_rules.cpp)
   // Largest shadow-map side (texels) the precision checks assume: SAT sums of W^2 texels
   // lower the EVSM exponent limit by ln(W^2)/2 (docs/dsl.md "Exponent limits"). The runtime must not

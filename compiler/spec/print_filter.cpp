@@ -208,6 +208,7 @@ std::string printFilter(const FilterSpec& s) {
                                      ? call("reduce", {"amount: " + num(s.moments.bleedingReduction)})
                                      : "none");
   lines.emplace_back("backface", s.backfaceShadowed ? "shadowed" : "filtered");
+  if (s.formFactorWeights) lines.emplace_back("weights", "form_factor");  // absent = uniform, as before
   lines.emplace_back("map_size", std::to_string(s.mapSize));
   if (s.cascades.count > 0) {
     const CascadeSpec& c = s.cascades;

@@ -20,9 +20,9 @@ using dsl::DiagId;
 using dsl::Setting;
 using dsl::Value;
 
-const Names kSettings = {"light",     "depth",    "moments",  "storage",  "blur",     "mips",
-                         "blocker",   "kernel",   "sampling", "bias",     "fallback", "contact",
-                         "early_out", "backface", "bleeding", "map_size", "cascades"};
+const Names kSettings = {"light",     "depth",    "moments",  "storage", "blur",     "mips",
+                         "blocker",   "kernel",   "sampling", "bias",    "fallback", "contact",
+                         "early_out", "backface", "bleeding", "weights", "map_size", "cascades"};
 
 class SettingsReader : ValueReader {
  public:
@@ -100,7 +100,10 @@ class SettingsReader : ValueReader {
       if (auto c = choice(&v, what, {"shadowed", "filtered"})) out_.spec.backfaceShadowed = *c == 0;
     } else if (s.keyword == "bleeding")
       out_.bleeding = &s, readBleeding(v, what);
-    else if (s.keyword == "cascades")
+    else if (s.keyword == "weights") {
+      out_.weights = &s;
+      if (auto c = choice(&v, what, {"uniform", "form_factor"})) out_.spec.formFactorWeights = *c == 1;
+    } else if (s.keyword == "cascades")
       readCascades(s);
     else if (s.keyword == "map_size") {
       if (auto n = integer(&v, what, 16, 16384)) out_.spec.mapSize = *n;

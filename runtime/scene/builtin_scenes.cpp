@@ -112,6 +112,15 @@ const std::map<std::string, ordered_json>& builtins() {
               "kernels and small blocker searches fail and SAT/mip filters must cover huge regions.",
               camera(v3(0, 7, 9), v3(0, 0, 0)), light("rect", v3(0, 5, 0), down, 4.0),
               {floorPlane(14), box("block", v3(1.5, 0.5, 1.5), transform(v3(0, 2.5, 0)))});
+    // A light as wide as its height above the occluder: the light's form factor varies by a factor of
+    // about 2.5 across it as seen from the floor under the tray, so a filter that counts the
+    // visible part of the light uniformly misses the truth by several percent (docs/dsl.md "weights").
+    t["lamp_table"] =
+        scene("lamp_table",
+              "A 1.5-unit lamp 1 unit above a thin tray over a table: the light is as wide as its height above the "
+              "occluder, so how the filter weighs the parts of the light decides its error.",
+              camera(v3(0, 3.2, 3.2), v3(0, 0, 0)), light("rect", v3(0, 1.8, 0), down, 1.5),
+              {floorPlane(6), plane("tray", 0.8, 0.8, transform(v3(-0.1, 0.8, 0.05), v3(0, 20, 0)))});
     t["small_penumbra"] =
         scene("small_penumbra",
               "A 0.05-unit light far away, occluder near the floor: penumbrae narrower than a shadow-map texel, so the "

@@ -70,6 +70,47 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker) {
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r.lightWidth, r.zr, zb) * float(shadowc_mapSize().x));
 }
 
+#if SHADOWC_WEIGHTED
+// Kernels weighted like the light (`weights form_factor`, docs/dsl.md "weights"). The reference
+// weighs each light point q by cos(theta_receiver) cos(theta_light) / r^2 (docs/scenes.md "Ground
+// truth"); a kernel counts its taps alike. Which light point a position in a kernel stands for:
+// a blocker at light-view depth zb that hides light point q (light plane z = 0) from receiver p
+// projects (frame.glsl) to the receiver's own map position plus q (zr - zb) / (zb zr), and the
+// penumbra kernel is the light's width W times that factor (shadowc_penumbraWidthUV), so a
+// position `o` texels from the kernel centre of a kernel `w` texels wide stands for
+//     q = o W / w,  same axes as the light view (+u = +x, +v = +y),
+// exact for planar occluders parallel to the light; a search region (or a fixed kernel) is read
+// the same way. The weight, with v = q - p and n the receiver's unit normal in light view:
+//     (n . v)+ p_z / |v|^4  times p_z^2 (one factor per receiver, so the weights are <= 1),
+// zero for light points behind the tangent plane, plus 1e-12 so that a receiver with the whole
+// light behind it (`backface filtered`) gets the uniform average instead of 0 / 0.
+vec3 shadowc_wP;      // the receiver (unbiased) in light view
+vec3 shadowc_wN;      // its unit normal in light view (0 when the normal is 0)
+vec3 shadowc_wKernel; // the kernel the VSSM walks weigh: xy centre (texels), z light width / kernel width
+
+void shadowc_weightsReceiver(vec3 worldPos, vec3 worldNormal) {
+  shadowc_wP = (shadowc_frame().lightView * vec4(worldPos, 1.0)).xyz;
+  vec3 n = mat3(shadowc_frame().lightView) * worldNormal;
+  float len = length(n);
+  shadowc_wN = len > 0.0 ? n / len : vec3(0.0);
+}
+
+// The weight of light point q (light-view x, y of the plane z = 0).
+float shadowc_lightWeight(vec2 q) {
+  vec3 v = vec3(q, 0.0) - shadowc_wP;
+  float r2 = dot(v, v);
+  float z = shadowc_wP.z;
+  return max(dot(shadowc_wN, v), 0.0) * z * z * z / max(r2 * r2, 1e-30) + 1e-12;
+}
+
+// The weight of position `pos` (texels) in a kernel `w` texels wide centred at `c`.
+float shadowc_tapWeight(vec2 pos, vec2 c, float w) { return shadowc_lightWeight((pos - c) * (shadowc_lightWidth() / w)); }
+
+// The kernel the VSSM walks weigh their boxes in (vssm.glsl).
+void shadowc_weightsKernel(vec2 c, float w) { shadowc_wKernel = vec3(c, shadowc_lightWidth() / w); }
+float shadowc_kernelWeight(vec2 pos) { return shadowc_lightWeight((pos - shadowc_wKernel.xy) * shadowc_wKernel.z); }
+#endif
+
 // Map a value to [0, 1]; NaN becomes 0 (shadowed) rather than propagating.
 float shadowc_unit(float v) { return (v >= 0.0) ? min(v, 1.0) : 0.0; }
 

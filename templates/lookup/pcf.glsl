@@ -4,7 +4,8 @@
 //  bilinear: the same n x n positions, each the bilinear weight of its 4 neighbouring tests
 //            (smooth in c, no texel-grid stepping)
 //  poisson:  k taps of a Poisson disk of radius w/2, rotated per world position (rotation.glsl)
-// No division by anything but the (constant, >= 1) tap count: no NaN possible.
+// No division by anything but the (constant, >= 1) tap count, or with `weights form_factor` the
+// sum of the taps' weights (each > 0, kernel.glsl): no NaN possible.
 #ifndef SHADOWC_PCF_GLSL
 #define SHADOWC_PCF_GLSL
 
@@ -28,30 +29,65 @@ float shadowc_litBilinear(vec2 pos, float d) {
 #if SHADOWC_PCF_PATTERN == SHADOWC_PATTERN_GRID
 float shadowc_pcfGrid(vec2 c, float w, float d, int n) {
   float lit = 0.0;
+#if SHADOWC_WEIGHTED
+  float total = 0.0;  // each tap weighs its light patch (kernel.glsl)
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      vec2 pos = c + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
+      float k = shadowc_tapWeight(pos, c, w);
+      lit += k * shadowc_litTexel(ivec2(floor(pos)), d);
+      total += k;
+    }
+  return lit / total;
+#else
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       vec2 pos = c + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
       lit += shadowc_litTexel(ivec2(floor(pos)), d);
     }
   return lit / float(n * n);
+#endif
 }
 #endif
 
 #if SHADOWC_PCF_PATTERN == SHADOWC_PATTERN_BILINEAR || SHADOWC_CONTACT
 float shadowc_pcfBilinearGrid(vec2 c, float w, float d, int n) {
   float lit = 0.0;
+#if SHADOWC_WEIGHTED
+  float total = 0.0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      vec2 pos = c + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
+      float k = shadowc_tapWeight(pos, c, w);
+      lit += k * shadowc_litBilinear(pos, d);
+      total += k;
+    }
+  return lit / total;
+#else
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) lit += shadowc_litBilinear(c + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n)), d);
   return lit / float(n * n);
+#endif
 }
 #endif
 
 #if SHADOWC_HAS_POISSON_PCF
 float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot) {
   float lit = 0.0;
+#if SHADOWC_WEIGHTED
+  float total = 0.0;
+  for (int i = 0; i < SHADOWC_PCF_TAPS; ++i) {
+    vec2 o = shadowc_rotate(shadowc_poissonPcf[i], rot) * 0.5;  // the tap as a fraction of the kernel
+    float k = shadowc_lightWeight(o * shadowc_lightWidth());
+    lit += k * shadowc_litTexel(ivec2(floor(c + o * w)), d);
+    total += k;
+  }
+  return lit / total;
+#else
   for (int i = 0; i < SHADOWC_PCF_TAPS; ++i)
     lit += shadowc_litTexel(ivec2(floor(c + shadowc_rotate(shadowc_poissonPcf[i], rot) * (0.5 * w))), d);
   return lit / float(SHADOWC_PCF_TAPS);
+#endif
 }
 #endif
 

@@ -9,7 +9,8 @@
 #ifndef SHADOWC_PCSS_GLSL
 #define SHADOWC_PCSS_GLSL
 
-// Average occluder depth over a search region `w` texels wide, or -1 when nothing occludes.
+// Average occluder depth over a search region `w` texels wide, or -1 when nothing occludes; with
+// `weights form_factor` each occluding tap counts with its light patch's weight (kernel.glsl).
 float shadowc_blockerSearch(shadowc_Receiver r, float w) {
   float sum = 0.0;
   float count = 0.0;
@@ -19,12 +20,23 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
 #endif
   vec2 rot = shadowc_rotation(r.worldPos);
   for (int i = 0; i < SHADOWC_BLOCKER_TAPS; ++i) {
+#if SHADOWC_WEIGHTED
+    vec2 o = shadowc_rotate(shadowc_poissonBlocker[i], rot) * 0.5;  // the tap as a fraction of the region
+    ivec2 t = ivec2(floor(r.texel + o * w));
+    float z = shadowc_depthAt(t);
+    float k = shadowc_lightWeight(o * shadowc_lightWidth());  // the tap's light patch (kernel.glsl)
+    if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
+      sum += k * z;
+      count += k;
+    }
+#else
     ivec2 t = ivec2(floor(r.texel + shadowc_rotate(shadowc_poissonBlocker[i], rot) * (0.5 * w)));
     float z = shadowc_depthAt(t);
     if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
       sum += z;
       count += 1.0;
     }
+#endif
   }
 #else
   const int n = SHADOWC_BLOCKER_GRID_N;
@@ -33,10 +45,18 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
       vec2 pos = r.texel + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
       ivec2 t = ivec2(floor(pos));
       float z = shadowc_depthAt(t);
+#if SHADOWC_WEIGHTED
+      float k = shadowc_tapWeight(pos, r.texel, w);
+      if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
+        sum += k * z;
+        count += k;
+      }
+#else
       if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
         sum += z;
         count += 1.0;
       }
+#endif
     }
 #endif
   return count > 0.0 ? sum / count : -1.0;

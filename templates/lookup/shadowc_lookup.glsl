@@ -55,6 +55,9 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r) {
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r.worldPos = worldPos;
   r.lightWidth = shadowc_lightWidth();
+#if SHADOWC_WEIGHTED
+  shadowc_weightsReceiver(worldPos, worldNormal);  // the light patches' weights (kernel.glsl)
+#endif
   if (p.w == 0.0) return false;
   vec4 ls = shadowc_lightSpace(p.xyz);
   r.uv = ls.xy;

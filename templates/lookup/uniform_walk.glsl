@@ -91,7 +91,7 @@ void shadowc_uniformResolveMarks(uint marksLo, uint marksHi, int den) {
 }
 #endif
 
-#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL && !SHADOWC_SAT_WIDE && SHADOWC_UNIFORM_MAX_DEN <= 8
+#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL && !SHADOWC_SAT_WIDE && SHADOWC_UNIFORM_MAX_DEN <= 8 && !SHADOWC_WEIGHTED
 #define SHADOWC_BAND_WALK 1
 // `always` (sec. 5.2, every root that is not fully lit is subdivided): nearly every group that
 // gets here walks, so what counts is the walk's reads, not what a group that does not walk pays.
@@ -165,7 +165,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
     return;
   }
 #endif
-#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL && !SHADOWC_SAT_WIDE
+#if SHADOWC_HAS_SAT && !SHADOWC_SAT_FRACTIONAL && !SHADOWC_SAT_WIDE && !SHADOWC_WEIGHTED
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
 #if SHADOWC_WALK_DEFER
@@ -209,7 +209,7 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
 #if SHADOWC_WALK_DEFER
   shadowc_uniformResolveMarks(marksLo, marksHi, den);
 #endif
-#elif SHADOWC_SAT_WIDE && !SHADOWC_SAT_FRACTIONAL
+#elif SHADOWC_SAT_WIDE && !SHADOWC_SAT_FRACTIONAL && !SHADOWC_WEIGHTED
   ivec2 root = ivec2(shadowc_vRoot.xy);
   ivec2 size = ivec2(shadowc_vRoot.zw) - root;
   int subs = den * den;
@@ -302,6 +302,8 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly) {
   shadowc_uniformResolveMarks(marksLo, marksHi, den);
 #endif
 #else
+  // Box by box (and every walk with `weights form_factor`: shadowc_qtClassifyBox weighs each
+  // sub-kernel by its light patch; the root alone needs no weight, it is one patch).
   float area = shadowc_boxArea(whole);
   int rows = shadowc_rootNeedsWalk(shadowc_boxMoments(whole, 0), area, nonPlanarOnly) ? den : 0; SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1 + rows * den)
   for (int j = 0; j < rows; ++j)

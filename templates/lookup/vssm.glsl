@@ -87,6 +87,18 @@ vec4 shadowc_qtBox(ivec3 node) {
 
 float shadowc_boxArea(vec4 box) { return (box.z - box.x) * (box.w - box.y); }
 
+// What a sub-kernel counts for in Algorithm 2's sums: its area, or with `weights form_factor` its
+// area times the weight of the light patch it stands for (the weight at its centre: kernel.glsl,
+// shadowc_kernelWeight; midpoint rule over the patch, docs/dsl.md "weights"). Eq. 5 then averages
+// moments by weight, and the visibility is the weighted share of the light, as the reference's.
+float shadowc_boxWeight(vec4 box) {
+#if SHADOWC_WEIGHTED
+  return shadowc_boxArea(box) * shadowc_kernelWeight(0.5 * (box.xy + box.zw));
+#else
+  return shadowc_boxArea(box);
+#endif
+}
+
 // Algorithm 2 L9-L19 for one sub-kernel of `area` texels with mean moments m: 0 = accepted (lit,
 // or normal when `acceptNormal`) or not there (area <= 0: an empty box, or a walk slot without a
 // cell; it adds nothing, x + 0.0 being x, whatever m holds), 1 = not accepted (non-planar; or
@@ -113,12 +125,23 @@ int shadowc_qtAccept(vec4 m, float area) { return shadowc_classify(m, area, true
 
 // Algorithm 2 L6-L19 for one sub-kernel box: 0 = accepted (lit or normal, or empty), 1 = non-planar.
 int shadowc_qtClassifyBox(vec4 box) {
-  return shadowc_qtAccept(shadowc_boxMoments(box, 0), shadowc_boxArea(box));
+  return shadowc_qtAccept(shadowc_boxMoments(box, 0), shadowc_boxWeight(box));
+}
+
+// A quadtree node: a leaf as above; an inner node with `weights form_factor` accepts only "lit"
+// and descends where it is normal too, so that the light is weighed patch by patch at the leaves
+// (a normal box accepted whole would be one patch, weighed uniformly inside).
+int shadowc_qtClassifyNode(vec4 box, bool leaf) {
+#if SHADOWC_WEIGHTED
+  return shadowc_classify(shadowc_boxMoments(box, 0), shadowc_boxWeight(box), leaf);
+#else
+  return shadowc_qtClassifyBox(box);
+#endif
 }
 
 // A non-planar leaf (Algorithm 2 L22-L26); `box` is the one its classification read (area > 0).
 void shadowc_qtResolveLeaf(vec4 box) {
-  float area = shadowc_boxArea(box);
+  float area = shadowc_boxWeight(box);
 #if SHADOWC_FALLBACK_PCF
   const int n = SHADOWC_FALLBACK_N;
   vec2 size = box.zw - box.xy;
@@ -177,7 +200,7 @@ void shadowc_markResolve(int b, vec4 box) { shadowc_qtResolveLeaf(b < 0 ? vec4(0
 #endif
 
 // Callbacks of the generated unrolled traversal (quadtree_tables.cpp).
-bool shadowc_qtVisit(ivec3 node) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1) return shadowc_qtClassifyBox(shadowc_qtBox(node)) == 1; }
+bool shadowc_qtVisit(ivec3 node) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1) return shadowc_qtClassifyNode(shadowc_qtBox(node), false) == 1; }
 void shadowc_qtLeaf(ivec3 node) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1) shadowc_qtLeafBox(shadowc_qtBox(node)); }
 
 #include "lookup/uniform_walk.glsl"
@@ -226,8 +249,8 @@ bool shadowc_qtDefers(int height) {
 // resolved in place or marked for after the walk. True when the walk takes Child, else Next.
 bool shadowc_qtStep(ivec3 n, int height, bool defer, inout uint marksLo, inout uint marksHi) { SHADOWC_COUNT(SHADOWC_WORK_WALK_STEPS, 1)
   vec4 box = shadowc_qtBox(n);
-  bool nonPlanar = shadowc_qtClassifyBox(box) == 1;
   bool leaf = n.z >= (1 << height);
+  bool nonPlanar = shadowc_qtClassifyNode(box, leaf) == 1;
 #if SHADOWC_FALLBACK_PCF
   if (defer) {
     shadowc_markSet(marksLo, marksHi, shadowc_qtMorton(n.xy), nonPlanar && leaf);
@@ -343,6 +366,9 @@ float shadowc_vssmVisibility(vec4 box, float d) {
 
 float shadowc_vssm(shadowc_Receiver r) {
   vec4 searchBox = shadowc_kernelBox(r.texel, shadowc_searchTexels(r));
+#if SHADOWC_WEIGHTED
+  shadowc_weightsKernel(r.texel, shadowc_searchTexels(r));  // the search region stands for the light
+#endif
   float zb = shadowc_vssmBlocker(searchBox, r.d); SHADOWC_NAIVE_VSSM_RETURN(zb) SHADOWC_COUNT(SHADOWC_WORK_BLOCKERS_FOUND, zb >= 0.0)
 #if SHADOWC_CONTACT
   // sec. 6.4: blocker and receiver nearly touch; the SAT is least precise there and the penumbra
@@ -367,6 +393,9 @@ float shadowc_vssm(shadowc_Receiver r) {
   float w = shadowc_penumbraTexels(r, zb);
 #else
   float w = SHADOWC_KERNEL_FIXED_TEXELS;
+#endif
+#if SHADOWC_WEIGHTED
+  shadowc_weightsKernel(r.texel, w);
 #endif
   return shadowc_vssmVisibility(shadowc_kernelBox(r.texel, w), r.d);
 }

@@ -105,6 +105,7 @@ const std::vector<SampleCase>& cases() {
     {"vssm_contact", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders"}},
     {"vssm_minmax_early_out", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders"}},
     {"vssm_pcf_fallback", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders", "duck", "spider", "engine"}},
+    {"vssm_form_factor", nullptr, nullptr, true, {"large_penumbra", "lamp_table", "two_planes", "duck"}},
     {"vssm_quadtree_table", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders"}},
     {"vssm_quadtree_unrolled", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders"}},
     {"msm_plain", nullptr, nullptr, true, {"two_planes", "stacked_planes", "small_penumbra"}},

@@ -131,6 +131,27 @@ TEST(Planner, FpSatKindsUseFloatFormats) {
   EXPECT_EQ(image(planPasses(spec), "sat")->format, ImageFormat::RGBA32F);
 }
 
+// `weights form_factor` reaches the shade pass as SHADOWC_WEIGHTED for a spot light only (the
+// checker warns for the others, W0505); unweighted filters define nothing, so they emit what they did.
+TEST(Planner, FormFactorWeightsAreDefinedForSpotLightsOnly) {
+  auto weighted = [](FilterSpec s) {
+    const PassGraph g = planPasses(s);
+    const auto shade = std::find_if(g.manifest.passes.begin(), g.manifest.passes.end(),
+                                    [](const Pass& p) { return p.kind == "shade"; });
+    const auto& values = g.sources.at(size_t(shade - g.manifest.passes.begin())).values.constants;
+    return std::any_of(values.begin(), values.end(), [](const Constant& c) { return c.name == "SHADOWC_WEIGHTED"; });
+  };
+  FilterSpec s = test::vssmInt32Spec();
+  EXPECT_FALSE(weighted(s));
+  s.formFactorWeights = true;
+  EXPECT_TRUE(weighted(s));
+  FilterSpec pcf = test::pcfSpec();
+  pcf.formFactorWeights = true;
+  EXPECT_TRUE(weighted(pcf));
+  pcf.light.type = LightType::Sun;
+  EXPECT_FALSE(weighted(pcf));
+}
+
 TEST(Planner, LayeredMomentsHaveOneArrayLayerPerLayerAndFoldedSplits) {
   const PassGraph g = planPasses(test::layeredEvsmSpec());
   const ImageDesc* m = image(g, "moments");

@@ -184,6 +184,30 @@ TEST(Normalize, BackfaceDefaultsToTheShadowingTerm) {
   EXPECT_EQ(codes("backface culled"), Codes{"E0302"});
 }
 
+TEST(Normalize, WeightsDefaultToUniformAndFormFactorIsKeptWhereItActs) {
+  // `weights form_factor` (docs/dsl.md "weights"): written to the spec JSON and the printed filter
+  // only when on, so every other manifest stays byte-identical; it round-trips through printing.
+  EXPECT_FALSE(load("").formFactorWeights);
+  EXPECT_FALSE(specToJson(load("")).contains("weights"));
+  EXPECT_EQ(printFilter(load("")).find("weights"), std::string::npos);
+  const std::string vssm = "moments linear\nstorage sat(int32)\nblocker moments\nkernel uniform(4)\n";
+  const FilterSpec weighted = load(vssm + "weights form_factor");
+  EXPECT_TRUE(weighted.formFactorWeights);
+  EXPECT_EQ(specToJson(weighted)["weights"], "form_factor");
+  const LoadResult back = loadFilterSource(printFilter(weighted), "printed.shadow");
+  ASSERT_TRUE(back.spec) << formatDiagnostics(back);
+  EXPECT_TRUE(back.spec->formFactorWeights);
+  EXPECT_FALSE(load(vssm + "weights uniform").formFactorWeights);
+  EXPECT_EQ(codes(vssm + "weights form_factor"), Codes{});
+  EXPECT_EQ(codes("kernel penumbra\nblocker search(16)\nweights form_factor"), Codes{});  // PCSS taps
+  // Where nothing stands for a part of the light, or the light is not a spot: no effect (W0505).
+  EXPECT_EQ(codes("moments linear\nblur box(2)\nweights form_factor"), Codes{"W0505"});
+  EXPECT_EQ(codes("moments linear\nstorage sat(int32)\nblocker moments(none)\nkernel penumbra\nweights form_factor"),
+            Codes{"W0505"});
+  EXPECT_EQ(codes("light sun(angle: 0.5)\nkernel penumbra\nblocker search(16)\nweights form_factor"), Codes{"W0505"});
+  EXPECT_EQ(codes("weights cosine"), Codes{"E0302"});
+}
+
 TEST(Normalize, KernelMaxDefaultsToWhatTheStorageServes) {
   // A SAT answers any box at the same cost: its penumbra kernels default to the whole map; depth
   // taps, mips and the min-max pyramid keep 64; an explicit max is kept.

@@ -104,7 +104,7 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 74
+#line 115
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -236,35 +236,36 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
   r . lightWidth = shadowc_lightWidth();
+#line 61
   if(p . w == 0.0)return false;
   vec4 ls = shadowc_lightSpace(p . xyz);
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
-#line 65
+#line 68
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
   r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 99
+#line 102
 bool shadowc_lightBehind(vec3 worldPos, vec3 worldNormal){
   vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
   vec3 n = mat3(shadowc_frame(). lightView)* worldNormal;
   float h = 0.5 * shadowc_lightWidth();
-#line 109
+#line 112
   return dot(n, - p)+ h *(abs(n . x)+ abs(n . y))<= 0.0;
 
 }
-#line 114
+#line 117
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
 
   if(shadowc_lightBehind(worldPos, worldNormal))return 0.0;
 
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 134
+#line 137
   float v = shadowc_momentsTechnique(r);
-#line 144
+#line 147
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -100,7 +100,7 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 74
+#line 115
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -119,21 +119,23 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
 }
 #line 18 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcf.glsl"
-#line 13
+#line 14
 float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< d ? 0.0 : 1.0;}
-#line 29
+#line 30
 float shadowc_pcfGrid(vec2 c, float w, float d, int n){
   float lit = 0.0;
+#line 43
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i){
       vec2 pos = c +(vec2(i, j)+ 0.5 - 0.5 * float(n))*(w / float(n));
       lit += shadowc_litTexel(ivec2(floor(pos)), d);
     }
   return lit / float(n * n);
+
 }
-#line 60
+#line 96
 float shadowc_pcf(shadowc_Receiver r, float w){
-#line 69
+#line 105
   return shadowc_pcfGrid(r . texel, w, r . d, 3);
 
 }
@@ -143,35 +145,36 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
   r . lightWidth = shadowc_lightWidth();
+#line 61
   if(p . w == 0.0)return false;
   vec4 ls = shadowc_lightSpace(p . xyz);
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
-#line 65
+#line 68
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
   r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 99
+#line 102
 bool shadowc_lightBehind(vec3 worldPos, vec3 worldNormal){
   vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
   vec3 n = mat3(shadowc_frame(). lightView)* worldNormal;
   float h = 0.5 * shadowc_lightWidth();
-#line 109
+#line 112
   return dot(n, - p)+ h *(abs(n . x)+ abs(n . y))<= 0.0;
 
 }
-#line 114
+#line 117
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
 
   if(shadowc_lightBehind(worldPos, worldNormal))return 0.0;
 
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 141
-  float v = shadowc_pcf(r, 3.0);
 #line 144
+  float v = shadowc_pcf(r, 3.0);
+#line 147
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"

@@ -108,7 +108,7 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 74
+#line 115
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -127,9 +127,9 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
 }
 #line 18 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcf.glsl"
-#line 13
+#line 14
 float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< d ? 0.0 : 1.0;}
-#line 16
+#line 17
 float shadowc_litBilinear(vec2 pos, float d){
   vec2 p = pos - 0.5;
   vec2 f = fract(p);
@@ -140,22 +140,26 @@ float shadowc_litBilinear(vec2 pos, float d){
   float g = shadowc_litTexel(i + ivec2(1, 1), d);
   return mix(mix(a, b, f . x), mix(e, g, f . x), f . y);
 }
-#line 29
+#line 30
 float shadowc_pcfGrid(vec2 c, float w, float d, int n){
   float lit = 0.0;
+#line 43
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i){
       vec2 pos = c +(vec2(i, j)+ 0.5 - 0.5 * float(n))*(w / float(n));
       lit += shadowc_litTexel(ivec2(floor(pos)), d);
     }
   return lit / float(n * n);
+
 }
-#line 41
+#line 54
 float shadowc_pcfBilinearGrid(vec2 c, float w, float d, int n){
   float lit = 0.0;
+#line 67
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i)lit += shadowc_litBilinear(c +(vec2(i, j)+ 0.5 - 0.5 * float(n))*(w / float(n)), d);
   return lit / float(n * n);
+
 }
 #line 23 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/minmax.glsl"
@@ -374,7 +378,13 @@ vec4 shadowc_qtBox(ivec3 node){
 }
 
 float shadowc_boxArea(vec4 box){ return(box . z - box . x)*(box . w - box . y);}
-#line 99
+#line 94
+float shadowc_boxWeight(vec4 box){
+#line 98
+  return shadowc_boxArea(box);
+
+}
+#line 111
 int shadowc_classify(vec4 m, float area, bool acceptNormal){
   bool there = area > 0.0;
   float variance = m . y - m . x * m . x;
@@ -386,15 +396,21 @@ int shadowc_classify(vec4 m, float area, bool acceptNormal){
   shadowc_aVsmArea += normal ? area : 0.0;
   return there && ! lit && ! normal ? 1 : 0;
 }
-#line 112
+#line 124
 int shadowc_qtAccept(vec4 m, float area){ return shadowc_classify(m, area, true);}
-#line 115
+#line 127
 int shadowc_qtClassifyBox(vec4 box){
-  return shadowc_qtAccept(shadowc_boxMoments(box, 0), shadowc_boxArea(box));
+  return shadowc_qtAccept(shadowc_boxMoments(box, 0), shadowc_boxWeight(box));
 }
-#line 120
+#line 134
+int shadowc_qtClassifyNode(vec4 box, bool leaf){
+#line 138
+  return shadowc_qtClassifyBox(box);
+
+}
+#line 143
 void shadowc_qtResolveLeaf(vec4 box){
-  float area = shadowc_boxArea(box);
+  float area = shadowc_boxWeight(box);
 
   const int n = 2;
   vec2 size = box . zw - box . xy;
@@ -402,7 +418,7 @@ void shadowc_qtResolveLeaf(vec4 box){
   float depthSum = 0.0;
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i){
-#line 132
+#line 155
       ivec2 t = ivec2(box . xy)+ ivec2(floor((vec2(i, j)+ 0.5)* size / float(n)));
 
       float z = shadowc_depthAt(t);
@@ -415,29 +431,29 @@ void shadowc_qtResolveLeaf(vec4 box){
   shadowc_aPcfArea += area;
   shadowc_aPcfOcc += occluded * scale;
   shadowc_aPcfDepth += depthSum * scale;
-#line 147
+#line 170
 }
-#line 150
+#line 173
 void shadowc_qtLeafBox(vec4 box){
   if(shadowc_qtClassifyBox(box)== 1)shadowc_qtResolveLeaf(box);
 }
-#line 157
+#line 180
 void shadowc_markSet(inout uint lo, inout uint hi, int b, bool on){
   uint m = on ? 1u <<(b & 31): 0u;
   lo |= b < 32 ? m : 0u;
   hi |= b >= 32 ? m : 0u;
 }
-#line 168
+#line 191
 int shadowc_markPop(inout uint lo, inout uint hi){
   int b = lo != 0u ? findLSB(lo): hi != 0u ? 32 + findLSB(hi): - 1;
   if(b < 32)lo &= lo - 1u;
   else hi &= hi - 1u;
   return b;
 }
-#line 176
+#line 199
 void shadowc_markResolve(int b, vec4 box){ shadowc_qtResolveLeaf(b < 0 ? vec4(0.0, 0.0, 1.0, 1.0): box);}
-#line 180
-bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyBox(shadowc_qtBox(node))== 1;}
+#line 203
+bool shadowc_qtVisit(ivec3 node){ return shadowc_qtClassifyNode(shadowc_qtBox(node), false)== 1;}
 void shadowc_qtLeaf(ivec3 node){ shadowc_qtLeafBox(shadowc_qtBox(node));}
 
 #line 1 "lookup/uniform_walk.glsl"
@@ -547,26 +563,26 @@ void shadowc_uniformWalk(int den, bool nonPlanarOnly){
   }
 
   shadowc_uniformResolveMarks(marksLo, marksHi, den);
-#line 310
+#line 312
 }
-#line 184 "lookup/vssm.glsl"
-#line 205
+#line 207 "lookup/vssm.glsl"
+#line 228
 int shadowc_qtMorton(ivec2 p){
   ivec2 s =(p & 1)|((p & 2)<< 1)|((p & 4)<< 2);
   return s . x |(s . y << 1);
 }
 int shadowc_qtUnmorton(int b){ return(b & 1)|((b >> 1)& 2)|((b >> 2)& 4);}
-#line 217
+#line 240
 bool shadowc_qtDefers(int height){
 
   return height <= 3;
-#line 223
+#line 246
 }
-#line 227
+#line 250
 bool shadowc_qtStep(ivec3 n, int height, bool defer, inout uint marksLo, inout uint marksHi){
   vec4 box = shadowc_qtBox(n);
-  bool nonPlanar = shadowc_qtClassifyBox(box)== 1;
   bool leaf = n . z >=(1 << height);
+  bool nonPlanar = shadowc_qtClassifyNode(box, leaf)== 1;
 
   if(defer){
     shadowc_markSet(marksLo, marksHi, shadowc_qtMorton(n . xy), nonPlanar && leaf);
@@ -575,7 +591,7 @@ bool shadowc_qtStep(ivec3 n, int height, bool defer, inout uint marksLo, inout u
   if(nonPlanar && leaf)shadowc_qtResolveLeaf(box);
   return nonPlanar && ! leaf;
 }
-#line 241
+#line 264
 void shadowc_qtResolveMarked(int height, uint marksLo, uint marksHi){
 
   while((marksLo | marksHi)!= 0u){
@@ -584,7 +600,7 @@ void shadowc_qtResolveMarked(int height, uint marksLo, uint marksHi){
   }
 
 }
-#line 270
+#line 293
 void shadowc_qtTableWalk(int height){
   int i = 0;
   bool defer = shadowc_qtDefers(height);
@@ -596,12 +612,12 @@ void shadowc_qtTableWalk(int height){
   }
   shadowc_qtResolveMarked(height, marksLo, marksHi);
 }
-#line 285
+#line 308
 float shadowc_vssmBlocker(vec4 searchBox, float d){
   shadowc_vssmBegin(searchBox, d);
-#line 296
+#line 319
   shadowc_uniformWalk(5, 0 != 0);
-#line 301
+#line 324
   float a1 = 0.0;
   float z1 = 0.0;
   if(shadowc_aVsmArea > 0.0){
@@ -618,12 +634,12 @@ float shadowc_vssmBlocker(vec4 searchBox, float d){
   if(!(a > 1e-6))return - 1.0;
   return clamp((z1 * a1 + shadowc_aPcfDepth)/ a, 0.0, d);
 }
-#line 319
+#line 342
 float shadowc_vssmVisibility(vec4 box, float d){
   shadowc_vssmBegin(box, d);
-#line 325
+#line 348
   shadowc_qtTableWalk(3);
-#line 334
+#line 357
   float l = 1.0;
   if(shadowc_aVsmArea > 0.0)
     l = shadowc_reduceBleeding(shadowc_chebyshev(shadowc_aEx / shadowc_aVsmArea, shadowc_aEx2 / shadowc_aVsmArea, d,
@@ -636,21 +652,22 @@ float shadowc_vssmVisibility(vec4 box, float d){
 
 float shadowc_vssm(shadowc_Receiver r){
   vec4 searchBox = shadowc_kernelBox(r . texel, shadowc_searchTexels(r));
+#line 372
   float zb = shadowc_vssmBlocker(searchBox, r . d);
-#line 354
+#line 380
   float zAvg = shadowc_boxMoments(searchBox, 0). x;
   bool touching = r . d - zAvg > 0.0 && r . d - zAvg < 0.01;
   if(touching ||(zb >= 0.0 && abs(r . d - zb)< 0.01)){
 
     float cw = shadowc_penumbraTexels(r, zb >= 0.0 ? zb : zAvg);
-#line 362
+#line 388
     return shadowc_pcfBilinearGrid(r . texel, cw, r . d, 3);
   }
 
   if(zb < 0.0)return 1.0;
 
   float w = shadowc_penumbraTexels(r, zb);
-#line 371
+#line 400
   return shadowc_vssmVisibility(shadowc_kernelBox(r . texel, w), r . d);
 }
 #line 49 "lookup/shadowc_lookup.glsl"
@@ -659,51 +676,52 @@ bool shadowc_receiver(vec3 worldPos, vec3 worldNormal, out shadowc_Receiver r){
   vec4 p = shadowc_biasedLightPosition(worldPos, worldNormal);
   r . worldPos = worldPos;
   r . lightWidth = shadowc_lightWidth();
+#line 61
   if(p . w == 0.0)return false;
   vec4 ls = shadowc_lightSpace(p . xyz);
   r . uv = ls . xy;
   r . texel = ls . xy * vec2(shadowc_mapSize());
-#line 65
+#line 68
   r . d = ls . z - shadowc_bias(worldPos, worldNormal);
   r . zr = max(ls . w, shadowc_frame(). lightParams . y);
 
   return all(greaterThanEqual(ls . xy, vec2(0.0)))&& all(lessThanEqual(ls . xy, vec2(1.0)));
 }
-#line 76
+#line 79
 ivec4 shadowc_influenceRect(shadowc_Receiver r){
 
   ivec4 rect = shadowc_kernelRect(r . texel, shadowc_searchTexels(r));
-#line 82
+#line 85
   ivec2 last = shadowc_mapSize()- 1;
   const int grow = 1 + 0;
   return ivec4(max(rect . xy - grow, ivec2(0)), min(rect . zw + grow, last));
 }
-#line 99
+#line 102
 bool shadowc_lightBehind(vec3 worldPos, vec3 worldNormal){
   vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
   vec3 n = mat3(shadowc_frame(). lightView)* worldNormal;
   float h = 0.5 * shadowc_lightWidth();
-#line 109
+#line 112
   return dot(n, - p)+ h *(abs(n . x)+ abs(n . y))<= 0.0;
 
 }
-#line 114
+#line 117
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal){
 
   if(shadowc_lightBehind(worldPos, worldNormal))return 0.0;
 
   shadowc_Receiver r;
   if(! shadowc_receiver(worldPos, worldNormal, r))return 1.0;
-#line 122
+#line 125
   ivec4 rect = shadowc_influenceRect(r);
-#line 126
+#line 129
   vec2 span = vec2(r . d);
 
   float early = shadowc_earlyOut(rect, span . x, span . y);
   if(early >= 0.0)return early;
-#line 132
+#line 135
   float v = shadowc_vssm(r);
-#line 144
+#line 147
   return shadowc_unit(v);
 }
 #line 12 "templates/shade.comp"
