@@ -45,7 +45,7 @@ CommandRunner registerPlan(CLI::App& app) {
     std::vector<std::string> scenes;
     double maxRmse = -1, budgetMs = -1;
     std::string out, model, calibrate, report, device, sweepDir = "plan-sweep", fromSweep, writeSweep;
-    uint32_t screen = 256, map = 1024;
+    uint32_t screen = 256, map = 1024, maxMap = 0;
     int samples = 16, warmup = 2;
     rt::RunCount runs = 5;
   };
@@ -65,6 +65,7 @@ CommandRunner registerPlan(CLI::App& app) {
       s += " --sweep-dir " + o->sweepDir;
     s += fmt::format(" --screen {} --map {} --samples {} --runs {} --warmup {}", o->screen, o->map, o->samples,
                      rt::toString(o->runs), o->warmup);
+    if (o->maxMap > 0) s += fmt::format(" --max-map {}", o->maxMap);
     if (!o->out.empty()) s += " -o " + o->out;
     return s;
   };
@@ -77,6 +78,9 @@ CommandRunner registerPlan(CLI::App& app) {
   sub->add_option("--screen", o->screen, "Screen width and height in pixels")->capture_default_str();
   addRenamedOption(sub, "--size", "--screen");
   sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
+  sub->add_option("--max-map", o->maxMap,
+                  "Largest shadow-map side the plan may choose when no filter meets --max-rmse at --map (written as "
+                  "the filter's `resolution`; docs/planning.md \"Map size\")");
   sub->add_option("--samples", o->samples, "Reference light samples per axis (N x N)")->capture_default_str();
   addRunsOption(sub, o->runs, "Timed runs per confirmation (the median counts)");
   sub->add_option("--warmup", o->warmup, "Untimed warm-up runs per confirmation")->capture_default_str();
@@ -152,6 +156,7 @@ CommandRunner registerPlan(CLI::App& app) {
     if (o->budgetMs >= 0) r.budgetMs = o->budgetMs;
     r.screen = o->screen;
     r.map = o->map;
+    if (o->maxMap > 0) r.maxMap = o->maxMap;
     r.samples = o->samples;
     r.runs = o->runs;
     r.warmup = o->warmup;
@@ -163,6 +168,7 @@ CommandRunner registerPlan(CLI::App& app) {
       const planning::PlanResult p = planning::plan(ctx, r, model);
       rt::writeFileAtomically(o->out, p.text);
       fmt::print("planned  {} -> {}\n", p.chosen.name, o->out);
+      if (!p.mapReason.empty()) fmt::print("  {}\n", p.mapReason);
       for (size_t i = 0; i < p.stats.size(); ++i)
         fmt::print("  {:<24} rmse {:.4f}  {:.2f} ms\n", p.stats[i].scene, p.measured.rmse[i], p.measured.ms[i]);
       fmt::print("  worst scene's time {:.2f} ms, 95% interval [{:.2f}, {:.2f}]\n", p.measured.worstMs,

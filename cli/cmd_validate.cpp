@@ -15,7 +15,9 @@ CommandRunner registerValidate(CLI::App& app) {
   sub->add_option("--scene", o->scene, "Built-in scene name or scene .json file")->required();
   sub->add_option("--screen", o->size, "Screen width and height in pixels")->capture_default_str();
   addRenamedOption(sub, "--size", "--screen");
-  sub->add_option("--map", o->map, "Shadow-map side in texels")->capture_default_str();
+  CLI::Option* map = sub->add_option("--map", o->map,
+                                     "Shadow-map side in texels (default: the filter's `resolution` when it has one, "
+                                     "else 1024)");
   sub->add_option("--samples", o->samples, "Reference light samples per axis (N x N)")->capture_default_str();
   sub->add_option("--json", o->jsonOut, "Write metrics and timings as JSON");
   sub->add_option("--images", o->imagesDir, "Write result/reference/error/comparison PNGs to this directory");
@@ -34,7 +36,10 @@ CommandRunner registerValidate(CLI::App& app) {
       "--no-reference-cache", [o](int64_t) { o->useCache = false; },
       "Trace the Embree reference again (do not read or write the reference cache)");
   addRenamedOption(sub, "--no-cache", "--no-reference-cache", /*takesValue=*/false);
-  return [o] { return runValidation(*o); };
+  return [o, map] {
+    o->mapGiven = map->count() > 0;
+    return runValidation(*o);
+  };
 }
 
 }  // namespace shadowc::cli

@@ -50,6 +50,7 @@ struct SpecFacts {
   double lightSize = 0;
   bool sun = false;  // light{type: "sun"}: an orthographic map (absent type: a spot light)
   int mapSize = 1 << 30;
+  int resolution = 0;  // the planned map side (`resolution`, docs/dsl.md), 0 = none
 };
 SpecFacts specFacts(const Manifest& manifest) {
   SpecFacts f;
@@ -65,6 +66,8 @@ SpecFacts specFacts(const Manifest& manifest) {
     f.lightSize = spec["light"].value("angle", 0.0);
   }
   if (spec.contains("map_size") && spec["map_size"].is_number_integer()) f.mapSize = spec["map_size"].get<int>();
+  if (spec.contains("resolution") && spec["resolution"].is_number_integer())
+    f.resolution = spec["resolution"].get<int>();
   return f;
 }
 
@@ -108,7 +111,8 @@ void printWork(const rt::WorkCounts& work) {
 
 }  // namespace
 
-int runValidation(const ValidationOptions& o) {
+int runValidation(const ValidationOptions& given) {
+  ValidationOptions o = given;
   if (o.size == 0 || o.map == 0 || o.samples < 1 || !o.runs.any() || o.warmup < 0)
     throw std::invalid_argument("--screen, --map, --samples and --runs must be positive, --warmup >= 0");
   // A misspelt form override is refused for every filter, before anything is compiled or traced.
@@ -118,6 +122,11 @@ int runValidation(const ValidationOptions& o) {
   const std::optional<CompiledPasses> compiled = passesToRun(o);
   if (!compiled) return 1;
   const SpecFacts facts = specFacts(compiled->manifest);
+  // A planned filter renders the map it was planned for unless --map says otherwise.
+  if (!o.mapGiven && facts.resolution > 0) {
+    o.map = uint32_t(facts.resolution);
+    fmt::print(stderr, "shadowc: rendering the filter's planned {}^2 map (its `resolution`; --map overrides)\n", o.map);
+  }
   if (int(o.map) > facts.mapSize)
     throw std::invalid_argument(fmt::format(
         "--map {} exceeds the filter's map_size {} (its precision checks assume at most that)", o.map, facts.mapSize));

@@ -17,6 +17,7 @@ struct ValidationOptions {
   std::string scene = "two_planes";
   uint32_t size = 512;    // screen width = height
   uint32_t map = 1024;    // shadow-map side
+  bool mapGiven = false;  // --map given: else the filter's planned `resolution`, when it has one
   int samples = 16;       // reference light samples per axis
   std::string jsonOut;    // empty = none
   std::string imagesDir;  // empty = none

@@ -149,6 +149,8 @@ const Candidate* findCandidate(const std::string& name) {
 FilterSpec candidateSpec(const Candidate& c, const DescribeOptions& o) {
   FilterSpec s;
   s.name = o.filterName;
+  s.resolution = o.resolution;
+  s.mapSize = std::max(s.mapSize, o.resolution);
   s.light.shape = LightShape::Rect;
   s.light.sizeFromScene = true;  // the runtime supplies the scene's light width
   if (o.light == LightType::Sun) s.light.type = LightType::Sun, s.light.shape = LightShape::Disk;  // the scene's angle

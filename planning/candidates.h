@@ -59,6 +59,8 @@ struct DescribeOptions {
   // The scenes' light: `light area(size: scene)`, `light sun(angle: scene)` or
   // `light point(radius: scene)` (a filter reads its map through its light's projection).
   LightType light = LightType::Spot;
+  // The map side the filter is planned for (`resolution`, docs/dsl.md), 0 = none; map_size follows it.
+  int resolution = 0;
   std::vector<std::string> header;                 // comment lines at the top (without '#')
   std::map<Feature, std::string> featureComments;  // one comment per feature (without '#')
 };

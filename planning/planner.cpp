@@ -236,9 +236,52 @@ std::string resolutionHint(const std::vector<SceneStats>& stats) {
 
 PlanResult plan(rt::VulkanContext& ctx, const PlanRequest& request, const PlanModel& model) {
   if (request.scenes.empty()) throw PlanError("give at least one --scene");
+  if (request.maxMap && (*request.maxMap < request.map || *request.maxMap > 16384))
+    throw PlanError(
+        fmt::format("--max-map {} must be at least --map {} and at most 16384", *request.maxMap, request.map));
   if (request.log) request.log("preparing the scenes (rasterize, Embree reference, analysis)");
   const PlanScenes scenes = preparePlanScenes(ctx, request.scenes, request.screen, request.map, request.samples, 0.01);
-  return planOnScenes(ctx, request, model, scenes);
+  try {
+    PlanResult p = planOnScenes(ctx, request, model, scenes);
+    p.map = request.map;
+    return p;
+  } catch (const UnreachableBound& e) {
+    // Map size as a planned resource (docs/planning.md "Map size"): where the penumbrae are
+    // narrower than the map resolves, no filter can shape them, and a larger map can.
+    if (!request.maxMap || *request.maxMap <= request.map) throw;
+    const SceneStats* narrow = nullptr;
+    for (const SceneStats& s : scenes.stats)
+      if (s.mapForPenumbraTexels() > s.mapSize && (!narrow || s.penumbraTexels.p10 < narrow->penumbraTexels.p10))
+        narrow = &s;
+    if (!narrow)
+      throw UnreachableBound(std::string(e.what()) +
+                             "; every scene's penumbrae are 2 texels or wider at this map, so a larger one "
+                             "(--max-map) would not help");
+    std::string last = e.what();
+    for (uint64_t m = uint64_t(request.map) * 2; m <= *request.maxMap; m *= 2) {
+      PlanRequest r = request;
+      r.map = uint32_t(m);
+      r.maxMap.reset();
+      r.resolution = int(m);
+      r.mapNote = fmt::format(
+          "Map {}^2 (`resolution`): no variant met the bound at {}^2, where the 10th-percentile penumbra on {} is "
+          "{:.2f} texels; at {}^2 it is {:.2f}.",
+          m, request.map, narrow->scene, narrow->penumbraTexels.p10, m,
+          narrow->penumbraTexels.p10 * double(m) / request.map);
+      if (request.log)
+        request.log(fmt::format("no variant meets the bound at {}^2: planning on a {}^2 map", request.map, m));
+      const PlanScenes larger = preparePlanScenes(ctx, request.scenes, request.screen, r.map, request.samples, 0.01);
+      try {
+        PlanResult p = planOnScenes(ctx, r, model, larger);
+        p.map = r.map;
+        p.mapReason = r.mapNote;
+        return p;
+      } catch (const UnreachableBound& again) {
+        last = again.what();
+      }
+    }
+    throw UnreachableBound(fmt::format("{} (and on every map up to --max-map {})", last, *request.maxMap));
+  }
 }
 
 PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, const PlanModel& model,
@@ -328,7 +371,7 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
         std::min_element(result.tried.begin(), result.tried.end(),
                          [](const Measurement& a, const Measurement& b) { return a.worstMs < b.worstMs; });
     if (request.maxRmse && byRmse->worstRmse > *request.maxRmse)
-      throw PlanError(
+      throw UnreachableBound(
           fmt::format("--max-rmse {:g} is unreachable on {}: the best reachable bound is {:.4f} (variant {}, "
                       "{:.2f} ms){}",
                       *request.maxRmse, sceneList(scenes), byRmse->worstRmse, byRmse->variant, byRmse->worstMs,
@@ -391,6 +434,8 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
   for (size_t i = 0; i < scenes.stats.size(); ++i)
     perScene += fmt::format("{}{} {:.4f}", i ? ", " : "  ", scenes.stats[i].scene, result.measured.rmse[i]);
   d.header.push_back(perScene);
+  if (!request.mapNote.empty()) d.header.push_back(request.mapNote);
+  d.resolution = request.resolution;
   result.text = describeCandidate(result.chosen, d);
   return result;
 }

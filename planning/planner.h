@@ -30,13 +30,23 @@ namespace shadowc::planning {
 struct PlanError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
+// The error bound is out of reach of every candidate (the one error a larger map may cure).
+struct UnreachableBound : PlanError {
+  using PlanError::PlanError;
+};
 
 struct PlanRequest {
   std::vector<std::string> scenes;  // built-in names or .json paths
   std::optional<double> maxRmse;    // at least one of maxRmse, budgetMs
   std::optional<double> budgetMs;
   uint32_t screen = 256, map = 1024;
-  int samples = 16;  // reference light samples per axis
+  // The largest map the plan may choose when no candidate meets --max-rmse at `map` (`--max-map`,
+  // docs/planning.md "Map size"): it then tries 2 map, 4 map, ... up to this and writes the first
+  // that works as the filter's `resolution`.
+  std::optional<uint32_t> maxMap;
+  int resolution = 0;   // written as `resolution` (set by the map search), 0 = none
+  std::string mapNote;  // why that map: a header comment of the written filter
+  int samples = 16;     // reference light samples per axis
   int warmup = 2;
   rt::RunCount runs = 5;  // a count, or auto (runtime/executor/run_timing.h)
   std::string filterName = "planned";
@@ -96,7 +106,9 @@ struct PlanResult {
   Measurement measured;            // of the chosen candidate
   std::vector<Measurement> tried;  // in the order they were confirmed
   std::vector<SceneStats> stats;
-  std::string text;  // the filter description written to -o
+  std::string text;       // the filter description written to -o
+  uint32_t map = 0;       // the map it was planned and confirmed at (request.map, or the larger one chosen)
+  std::string mapReason;  // why a larger map, when one was chosen
   double predictedMs = 0, predictedRmse = 0;
 };
 

@@ -255,6 +255,9 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
   out += "};\n\n";
   out += bindingArray(m, "lookup_bindings", m.shade.bindings);
   out += frameReads(m);
+  // The map side the filter is planned for (`resolution`, docs/dsl.md): what to allocate; 0 = the engine's choice.
+  const int planned = m.spec.is_object() && m.spec.contains("resolution") ? m.spec["resolution"].get<int>() : 0;
+  out += fmt::format("inline constexpr std::uint32_t plannedMapSize = {};\n", planned);
   out += fmt::format(
       "\ninline constexpr Filter filter{{\n    {}, {}, {},\n    images, sizeof images / sizeof images[0],\n"
       "    passes, sizeof passes / sizeof passes[0],\n    {{{}, {}, {}, {}, {}, {}}},\n    {}, {}}};\n\n}}  // "

@@ -89,6 +89,7 @@ enum class Caret {
   Contact,
   Bleeding,
   Weights,
+  Resolution,
   Bias,
   KernelElseStorage,         // the kernel setting when written, else storage
   LayersElseRepresentation,  // the `layers:` value when written, else the representation
@@ -294,6 +295,9 @@ const Rule kRules[] = {
      [](const Facts&, Args& a) {
        push(a, "weights", "one filtered box stands for the whole light; weigh sub-kernels with kernel uniform(n) or quadtree");
      }},
+    {DiagId::resolutionOverMapSize, Caret::Resolution,
+     [](const Facts& f) { return f.s.resolution > f.s.mapSize; },
+     [](const Facts& f, Args& a) { push(a, f.s.resolution, f.s.mapSize); }},
     {DiagId::zeroMinVariance, Caret::MinVariance,
      [](const Facts& f) { return f.moments && f.chebyshev && f.r.minVariance && f.s.moments.minVariance == 0; }},
     {DiagId::msmSmallBias, Caret::MomentBias,
@@ -349,6 +353,8 @@ Span caretOf(Caret c, const Facts& f, const dsl::FilterDecl& filter) {
       return settingSpan(r.bleeding, filter);
     case Caret::Weights:
       return settingSpan(r.weights, filter);
+    case Caret::Resolution:
+      return settingSpan(r.resolution, filter);
     case Caret::Bias:
       return settingSpan(r.bias, filter);
     case Caret::KernelElseStorage:

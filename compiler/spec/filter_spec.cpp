@@ -220,6 +220,7 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
   // Written only when weighted, so every other manifest stays byte-identical.
   if (s.formFactorWeights) j["weights"] = "form_factor";
   j["map_size"] = s.mapSize;
+  if (s.resolution > 0) j["resolution"] = s.resolution;  // only when planned: other manifests unchanged
   // Written only when cascaded, so every other manifest stays byte-identical.
   if (s.cascades.count > 0)
     j["cascades"] = J{{"count", s.cascades.count},

@@ -222,6 +222,10 @@ struct FilterSpec {
   // lower the EVSM exponent limit by ln(W^2)/2 (docs/dsl.md "Exponent limits"). The runtime must not
   // run the filter on a larger map. Setting `map_size`.
   int mapSize = 2048;
+  // The shadow-map side the filter is planned for (`resolution N`, `shadowc plan --max-map`): what
+  // an engine allocates, what `validate` renders unless --map says otherwise; 0 = the engine's
+  // choice. Without an explicit map_size, map_size follows it (normalize.cpp).
+  int resolution = 0;
   // Debug only, not reachable from the DSL: read every int32 SAT box with one 4-corner sum
   // however wide (no pieces, sat.glsl), and drop the NaN/Inf guards of the VSSM blocker
   // estimate (eq. 4's 1/(1 - P)) and the final [0, 1] sanitation, so the stability suite

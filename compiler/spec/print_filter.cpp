@@ -210,6 +210,7 @@ std::string printFilter(const FilterSpec& s) {
   lines.emplace_back("backface", s.backfaceShadowed ? "shadowed" : "filtered");
   if (s.formFactorWeights) lines.emplace_back("weights", "form_factor");  // absent = uniform, as before
   lines.emplace_back("map_size", std::to_string(s.mapSize));
+  if (s.resolution > 0) lines.emplace_back("resolution", std::to_string(s.resolution));
   if (s.cascades.count > 0) {
     const CascadeSpec& c = s.cascades;
     std::vector<std::string> args = {"count: " + std::to_string(c.count)};

@@ -20,9 +20,9 @@ using dsl::DiagId;
 using dsl::Setting;
 using dsl::Value;
 
-const Names kSettings = {"light",     "depth",    "moments",  "storage", "blur",     "mips",
-                         "blocker",   "kernel",   "sampling", "bias",    "fallback", "contact",
-                         "early_out", "backface", "bleeding", "weights", "map_size", "cascades"};
+const Names kSettings = {"light",    "depth",    "moments",  "storage",    "blur",    "mips",      "blocker",
+                         "kernel",   "sampling", "bias",     "fallback",   "contact", "early_out", "backface",
+                         "bleeding", "weights",  "map_size", "resolution", "cascades"};
 
 class SettingsReader : ValueReader {
  public:
@@ -106,7 +106,11 @@ class SettingsReader : ValueReader {
     } else if (s.keyword == "cascades")
       readCascades(s);
     else if (s.keyword == "map_size") {
+      out_.mapSize = &s;
       if (auto n = integer(&v, what, 16, 16384)) out_.spec.mapSize = *n;
+    } else if (s.keyword == "resolution") {
+      out_.resolution = &s;
+      if (auto n = integer(&v, what, 16, 16384)) out_.spec.resolution = *n;
     }
   }
 

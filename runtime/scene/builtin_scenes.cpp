@@ -127,6 +127,20 @@ const std::map<std::string, ordered_json>& builtins() {
               "result is limited by resolution and bias, and any blur over-softens.",
               camera(v3(0, 5, 6), v3(0, 0, 0)), light("rect", v3(0, 10, 0), down, 0.05),
               {floorPlane(), box("block", v3(1.5, 0.4, 1.5), transform(v3(0, 0.8, 0), v3(0, 30, 0)))});
+    // PCSS width W (zr - zb) / zb = 0.05 * 1 / 7 = 0.007 world units at the floor, about 0.75 texels of a
+    // 1024^2 map over this floor: resolution, not filtering, decides the edges (docs/planning.md
+    // "Map size"); the grate's many edges make them a large share of the image.
+    t["tiny_penumbra"] =
+        scene("tiny_penumbra",
+              "A 0.05-unit light 8 units up over a grate of thin bars 1 unit above the floor: penumbrae about 0.75 "
+              "texels wide at 1024^2, so every filter errs along the many edges until the map is larger.",
+              camera(v3(0, 3.5, 3.5), v3(0, 0, 0)), light("rect", v3(0, 8, 0), down, 0.05),
+              {floorPlane(), box("bar0", v3(0.12, 0.05, 3), transform(v3(-1.0, 1.0, 0), v3(0, 30, 0))),
+               box("bar1", v3(0.12, 0.05, 3), transform(v3(-0.6, 1.0, 0), v3(0, 30, 0))),
+               box("bar2", v3(0.12, 0.05, 3), transform(v3(-0.2, 1.0, 0), v3(0, 30, 0))),
+               box("bar3", v3(0.12, 0.05, 3), transform(v3(0.2, 1.0, 0), v3(0, 30, 0))),
+               box("bar4", v3(0.12, 0.05, 3), transform(v3(0.6, 1.0, 0), v3(0, 30, 0))),
+               box("bar5", v3(0.12, 0.05, 3), transform(v3(1.0, 1.0, 0), v3(0, 30, 0)))});
     // The light sits at the origin looking down; occluders at 1e-3, 1, 100 and near the floor at 1e4, so
     // the fitted near/far planes are about 1e-3 and 1e4 (fp32 depth, moment and SAT precision).
     t["depth_range"] = scene(

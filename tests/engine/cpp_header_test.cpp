@@ -80,6 +80,8 @@ std::string expectations(const Manifest& m, const driver::Artifact& a) {
       "eq(f::filter.lookup.signature, {}) && f::filter.lookup.set == {} && f::filter.lookup.bindingCount == {});\n",
       q(m.shade.glsl), q(m.shade.function), q(m.shade.signature), m.shade.set, m.shade.bindings.size());
   bindings("f::filter.lookup.bindings", m.shade.bindings);
+  // The planned map side (`resolution`, docs/dsl.md), 0 when the spec has none.
+  t += fmt::format("static_assert(f::plannedMapSize == {});\n", m.spec.value("resolution", 0));
   t += fmt::format("static_assert(f::filter.bufferCount == {});\n", m.buffers.size());
   for (size_t i = 0; i < m.buffers.size(); ++i) {
     const BufferDesc& b = m.buffers[i];
@@ -130,6 +132,25 @@ TEST_P(CppHeader, CompilesAndEveryValueEqualsTheManifest) {
 // Samples that between them use every manifest feature the header carries: several shared
 // shaders (mip, minmax), layers, int32 SAT, Lloyd splits, push constants where any exist, the
 // quadtree's table buffer.
+// A planned filter's header carries its map side (`resolution`); a sibling with another value fails.
+TEST(CppHeader, PlannedMapSizeIsTheResolution) {
+  driver::Options o;
+  o.engineOutputs = {driver::OutputKind::CppHeader};
+  const std::string text = test::readFile(test::samplePath("pcf_grid5x5"));
+  const driver::Result r =
+      driver::compileSource(text.substr(0, text.rfind('}')) + "    resolution 4096\n}\n", "planned_map.shadow", o);
+  ASSERT_TRUE(r.ok) << r.log;
+  const std::string name = cppHeaderFileName("pcf_grid5x5");  // named after the filter, not the file
+  const std::string* header = r.artifact->file(name);
+  ASSERT_TRUE(header);
+  const auto dir = test::freshTempDir("cpp-header-planned");
+  const std::string ns = "shadowc_filters::pcf_grid5x5::plannedMapSize";
+  EXPECT_EQ(compileTu(dir, name, *header, "static_assert(" + ns + " == 4096);\n"), 0)
+      << test::readFile(dir / "log.txt");
+  EXPECT_NE(compileTu(dir, name, *header, "static_assert(" + ns + " == 2048);\n"), 0);
+  std::filesystem::remove_all(dir);
+}
+
 INSTANTIATE_TEST_SUITE_P(Samples, CppHeader,
                          ::testing::Values("vssm_pcf_fallback", "vsm_blur_mips_bleeding", "layered_vsm_lloyd",
                                            "vssm_minmax_early_out", "pcss_poisson", "vssm_quadtree_table"),

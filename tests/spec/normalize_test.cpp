@@ -208,6 +208,24 @@ TEST(Normalize, WeightsDefaultToUniformAndFormFactorIsKeptWhereItActs) {
   EXPECT_EQ(codes("weights cosine"), Codes{"E0302"});
 }
 
+TEST(Normalize, ResolutionIsThePlannedMapAndRaisesTheDefaultMapSize) {
+  // `resolution N` (docs/dsl.md): absent by default and then absent from the JSON and the print;
+  // above the default map_size it raises it; above an explicit one it is E0460.
+  EXPECT_EQ(load("").resolution, 0);
+  EXPECT_FALSE(specToJson(load("")).contains("resolution"));
+  const FilterSpec planned = load("resolution 4096");
+  EXPECT_EQ(planned.resolution, 4096);
+  EXPECT_EQ(planned.mapSize, 4096);
+  EXPECT_EQ(specToJson(planned)["resolution"], 4096);
+  EXPECT_EQ(load("resolution 512").mapSize, 2048);  // the default stays when it is larger
+  const LoadResult back = loadFilterSource(printFilter(planned), "printed.shadow");
+  ASSERT_TRUE(back.spec) << formatDiagnostics(back);
+  EXPECT_EQ(back.spec->resolution, 4096);
+  EXPECT_EQ(codes("resolution 4096\nmap_size 1024"), Codes{"E0460"});
+  EXPECT_EQ(codes("resolution 4096\nmap_size 4096"), Codes{});
+  EXPECT_EQ(codes("resolution 8"), Codes{"E0304"});
+}
+
 TEST(Normalize, KernelMaxDefaultsToWhatTheStorageServes) {
   // A SAT answers any box at the same cost: its penumbra kernels default to the whole map; depth
   // taps, mips and the min-max pyramid keep 64; an explicit max is kept.
