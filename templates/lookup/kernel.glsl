@@ -100,7 +100,11 @@ float shadowc_lightWeight(vec2 q) {
   vec3 v = vec3(q, 0.0) - shadowc_wP;
   float r2 = dot(v, v);
   float z = shadowc_wP.z;
+#if SHADOWC_NAIVE_UNGUARDED
+  return max(dot(shadowc_wN, v), 0.0) * z * z * z / max(r2 * r2, 1e-30);  // stability suite: no floor
+#else
   return max(dot(shadowc_wN, v), 0.0) * z * z * z / max(r2 * r2, 1e-30) + 1e-12;
+#endif
 }
 
 // The weight of position `pos` (texels) in a kernel `w` texels wide centred at `c`.

@@ -55,5 +55,6 @@ void addContactCases(std::vector<StabilityCase>& out);
 void addMsmCases(std::vector<StabilityCase>& out);
 void addCornerCases(std::vector<StabilityCase>& out);
 void addLightCases(std::vector<StabilityCase>& out);
+void addWeightsCases(std::vector<StabilityCase>& out);
 
 }  // namespace shadowc::validation

@@ -169,6 +169,7 @@ const std::vector<StabilityCase>& stabilityCases() {
     addContactCases(out);
     addMsmCases(out);
     addLightCases(out);
+    addWeightsCases(out);
     return out;
   }();
   return cases;
