@@ -330,23 +330,25 @@ TEST(PlanCli, UnreachableBoundNamesTheMapSizeThatResolvesThePenumbra) {
 }
 
 // Map size as a planned resource (docs/planning.md "Map size"): tiny_penumbra's penumbrae are a third
-// of a texel at 512^2, so no filter meets 0.03 there; with --max-map the plan moves to a larger map,
+// of a texel at 512^2, so no filter meets 0.04 there; with --max-map the plan moves to a larger map,
 // writes it as the filter's `resolution`, and validate renders that map by itself and meets the bound.
 // Siblings: the same file rendered at 512^2 misses it (the map, not the filter, made the difference),
 // and without --max-map the plan fails naming the map size.
 TEST(PlanCli, MaxMapPlansTheLargerMapThatMeetsTheBound) {
   const auto dir = test::freshTempDir("plan_max_map");
   const std::string out = (dir / "tiny.shadow").string();
+  // 0.04 and 2048^2 rather than the 0.03 and 4096^2 docs/planning.md measures at full size: the same
+  // search on a quarter of the texels (under ASan this test is among the slowest).
   const std::string common =
-      " --scene tiny_penumbra --max-rmse 0.03 --screen 128 --map 512 --samples 8 --runs 1 --warmup 0";
-  const test::CliResult r = test::runShadowc("plan" + common + " --max-map 4096 -o " + out);
+      " --scene tiny_penumbra --max-rmse 0.04 --screen 128 --map 512 --samples 8 --runs 1 --warmup 0";
+  const test::CliResult r = test::runShadowc("plan" + common + " --max-map 2048 -o " + out);
   ASSERT_EQ(r.code, 0) << r.err;
   const std::string text = test::readFile(out);
   std::smatch m;
   ASSERT_TRUE(std::regex_search(text, m, std::regex(R"(\n    resolution (\d+)\n)"))) << text;
   const int planned = std::stoi(m[1]);
   EXPECT_GT(planned, 512);
-  EXPECT_LE(planned, 4096);
+  EXPECT_LE(planned, 2048);
   EXPECT_NE(text.find("no variant met the bound at 512^2"), std::string::npos) << text;
   auto validate = [&](const std::string& extra) {
     const std::string json = (dir / "v.json").string();
@@ -359,8 +361,8 @@ TEST(PlanCli, MaxMapPlansTheLargerMapThatMeetsTheBound) {
   };
   const nlohmann::json atPlanned = validate("");
   EXPECT_EQ(atPlanned["map_size"], planned);
-  EXPECT_LE(atPlanned["metrics"]["rmse"].get<double>(), 0.03);
-  EXPECT_GT(validate(" --map 512")["metrics"]["rmse"].get<double>(), 0.03);
+  EXPECT_LE(atPlanned["metrics"]["rmse"].get<double>(), 0.04);
+  EXPECT_GT(validate(" --map 512")["metrics"]["rmse"].get<double>(), 0.04);
   const test::CliResult without = test::runShadowc("plan" + common + " -o " + out);
   EXPECT_EQ(without.code, 1);
   EXPECT_NE(without.err.find("(plan with --map "), std::string::npos) << without.err;
