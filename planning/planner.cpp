@@ -242,9 +242,7 @@ PlanResult plan(rt::VulkanContext& ctx, const PlanRequest& request, const PlanMo
   if (request.log) request.log("preparing the scenes (rasterize, Embree reference, analysis)");
   const PlanScenes scenes = preparePlanScenes(ctx, request.scenes, request.screen, request.map, request.samples, 0.01);
   try {
-    PlanResult p = planOnScenes(ctx, request, model, scenes);
-    p.map = request.map;
-    return p;
+    return planOnScenes(ctx, request, model, scenes);
   } catch (const UnreachableBound& e) {
     // Map size as a planned resource (docs/planning.md "Map size"): where the penumbrae are
     // narrower than the map resolves, no filter can shape them, and a larger map can.
@@ -272,10 +270,7 @@ PlanResult plan(rt::VulkanContext& ctx, const PlanRequest& request, const PlanMo
         request.log(fmt::format("no variant meets the bound at {}^2: planning on a {}^2 map", request.map, m));
       const PlanScenes larger = preparePlanScenes(ctx, request.scenes, request.screen, r.map, request.samples, 0.01);
       try {
-        PlanResult p = planOnScenes(ctx, r, model, larger);
-        p.map = r.map;
-        p.mapReason = r.mapNote;
-        return p;
+        return planOnScenes(ctx, r, model, larger);
       } catch (const UnreachableBound& again) {
         last = again.what();
       }
@@ -434,6 +429,7 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
   for (size_t i = 0; i < scenes.stats.size(); ++i)
     perScene += fmt::format("{}{} {:.4f}", i ? ", " : "  ", scenes.stats[i].scene, result.measured.rmse[i]);
   d.header.push_back(perScene);
+  result.mapReason = request.mapNote;
   if (!request.mapNote.empty()) d.header.push_back(request.mapNote);
   d.resolution = request.resolution;
   result.text = describeCandidate(result.chosen, d);

@@ -107,8 +107,7 @@ struct PlanResult {
   std::vector<Measurement> tried;  // in the order they were confirmed
   std::vector<SceneStats> stats;
   std::string text;       // the filter description written to -o
-  uint32_t map = 0;       // the map it was planned and confirmed at (request.map, or the larger one chosen)
-  std::string mapReason;  // why a larger map, when one was chosen
+  std::string mapReason;  // why a larger map, when one was chosen (the request's mapNote)
   double predictedMs = 0, predictedRmse = 0;
 };
 

@@ -10,7 +10,7 @@ namespace shadowc::spec {
 
 void normalize(FilterSpec& spec, const SettingsRead& given) {
   // A planned resolution above the default map_size raises it (the precision checks below read it);
-  // above an explicit one it is E0454 (combination_rules.cpp).
+  // above an explicit one it is E0460 (combination_rules.cpp).
   if (!given.mapSize && spec.resolution > spec.mapSize) spec.mapSize = spec.resolution;
   MomentsSpec& m = spec.moments;
   const bool moments = spec.representation == Representation::Moments;

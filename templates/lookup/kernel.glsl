@@ -84,6 +84,11 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker) {
 //     (n . v)+ p_z / |v|^4  times p_z^2 (one factor per receiver, so the weights are <= 1),
 // zero for light points behind the tangent plane, plus 1e-12 so that a receiver with the whole
 // light behind it (`backface filtered`) gets the uniform average instead of 0 / 0.
+#if SHADOWC_NAIVE_UNGUARDED
+#define SHADOWC_WEIGHT_FLOOR 0.0  // stability suite: no floor, 0 / 0 where the light is behind
+#else
+#define SHADOWC_WEIGHT_FLOOR 1e-12
+#endif
 vec3 shadowc_wP;      // the receiver (unbiased) in light view
 vec3 shadowc_wN;      // its unit normal in light view (0 when the normal is 0)
 vec3 shadowc_wKernel; // the kernel the VSSM walks weigh: xy centre (texels), z light width / kernel width
@@ -100,11 +105,7 @@ float shadowc_lightWeight(vec2 q) {
   vec3 v = vec3(q, 0.0) - shadowc_wP;
   float r2 = dot(v, v);
   float z = shadowc_wP.z;
-#if SHADOWC_NAIVE_UNGUARDED
-  return max(dot(shadowc_wN, v), 0.0) * z * z * z / max(r2 * r2, 1e-30);  // stability suite: no floor
-#else
-  return max(dot(shadowc_wN, v), 0.0) * z * z * z / max(r2 * r2, 1e-30) + 1e-12;
-#endif
+  return max(dot(shadowc_wN, v), 0.0) * z * z * z / max(r2 * r2, 1e-30) + SHADOWC_WEIGHT_FLOOR;
 }
 
 // The weight of position `pos` (texels) in a kernel `w` texels wide centred at `c`.

@@ -26,25 +26,28 @@ float shadowc_litBilinear(vec2 pos, float d) {
 }
 #endif
 
+// With `weights form_factor` each tap counts with the weight of its light patch (kernel.glsl) and
+// the sum divides by the weights' total; without, by the tap count (the same loop either way).
 #if SHADOWC_PCF_PATTERN == SHADOWC_PATTERN_GRID
 float shadowc_pcfGrid(vec2 c, float w, float d, int n) {
   float lit = 0.0;
 #if SHADOWC_WEIGHTED
-  float total = 0.0;  // each tap weighs its light patch (kernel.glsl)
+  float total = 0.0;
+#endif
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       vec2 pos = c + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
+#if SHADOWC_WEIGHTED
       float k = shadowc_tapWeight(pos, c, w);
       lit += k * shadowc_litTexel(ivec2(floor(pos)), d);
       total += k;
+#else
+      lit += shadowc_litTexel(ivec2(floor(pos)), d);
+#endif
     }
+#if SHADOWC_WEIGHTED
   return lit / total;
 #else
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) {
-      vec2 pos = c + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
-      lit += shadowc_litTexel(ivec2(floor(pos)), d);
-    }
   return lit / float(n * n);
 #endif
 }
@@ -55,17 +58,21 @@ float shadowc_pcfBilinearGrid(vec2 c, float w, float d, int n) {
   float lit = 0.0;
 #if SHADOWC_WEIGHTED
   float total = 0.0;
+#endif
   for (int j = 0; j < n; ++j)
     for (int i = 0; i < n; ++i) {
       vec2 pos = c + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n));
+#if SHADOWC_WEIGHTED
       float k = shadowc_tapWeight(pos, c, w);
       lit += k * shadowc_litBilinear(pos, d);
       total += k;
+#else
+      lit += shadowc_litBilinear(pos, d);
+#endif
     }
+#if SHADOWC_WEIGHTED
   return lit / total;
 #else
-  for (int j = 0; j < n; ++j)
-    for (int i = 0; i < n; ++i) lit += shadowc_litBilinear(c + (vec2(i, j) + 0.5 - 0.5 * float(n)) * (w / float(n)), d);
   return lit / float(n * n);
 #endif
 }
@@ -76,16 +83,20 @@ float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot) {
   float lit = 0.0;
 #if SHADOWC_WEIGHTED
   float total = 0.0;
+#endif
   for (int i = 0; i < SHADOWC_PCF_TAPS; ++i) {
     vec2 o = shadowc_rotate(shadowc_poissonPcf[i], rot) * 0.5;  // the tap as a fraction of the kernel
+#if SHADOWC_WEIGHTED
     float k = shadowc_lightWeight(o * shadowc_lightWidth());
     lit += k * shadowc_litTexel(ivec2(floor(c + o * w)), d);
     total += k;
+#else
+    lit += shadowc_litTexel(ivec2(floor(c + o * w)), d);
+#endif
   }
+#if SHADOWC_WEIGHTED
   return lit / total;
 #else
-  for (int i = 0; i < SHADOWC_PCF_TAPS; ++i)
-    lit += shadowc_litTexel(ivec2(floor(c + shadowc_rotate(shadowc_poissonPcf[i], rot) * (0.5 * w))), d);
   return lit / float(SHADOWC_PCF_TAPS);
 #endif
 }

@@ -20,18 +20,16 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w) {
 #endif
   vec2 rot = shadowc_rotation(r.worldPos);
   for (int i = 0; i < SHADOWC_BLOCKER_TAPS; ++i) {
-#if SHADOWC_WEIGHTED
     vec2 o = shadowc_rotate(shadowc_poissonBlocker[i], rot) * 0.5;  // the tap as a fraction of the region
     ivec2 t = ivec2(floor(r.texel + o * w));
     float z = shadowc_depthAt(t);
+#if SHADOWC_WEIGHTED
     float k = shadowc_lightWeight(o * shadowc_lightWidth());  // the tap's light patch (kernel.glsl)
     if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
       sum += k * z;
       count += k;
     }
 #else
-    ivec2 t = ivec2(floor(r.texel + shadowc_rotate(shadowc_poissonBlocker[i], rot) * (0.5 * w)));
-    float z = shadowc_depthAt(t);
     if (z < SHADOWC_TAP_DEPTH(t, r.d)) {
       sum += z;
       count += 1.0;

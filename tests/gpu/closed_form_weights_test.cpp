@@ -97,9 +97,10 @@ double midpointVisibility(double px, double py) {
   double num = 0, den = 0;
   for (int i = 0; i < kN; ++i)
     for (int j = 0; j < kN; ++j) {
-      const double x0 = c[0] - w / 2 + i * w / kN, x1 = x0 + w / kN, y0 = c[1] - w / 2 + j * w / kN;
+      const double x0 = c[0] - w / 2 + i * w / kN, x1 = x0 + w / kN;
+      const double y0 = c[1] - w / 2 + j * w / kN, y1 = y0 + w / kN;
       const double lit = std::clamp((x1 - kMap / 2.0) / (x1 - x0), 0.0, 1.0);
-      const double qx = ((x0 + x1) / 2 - c[0]) * kW / w, qy = (y0 + w / (2 * kN) - c[1]) * kW / w;
+      const double qx = ((x0 + x1) / 2 - c[0]) * kW / w, qy = ((y0 + y1) / 2 - c[1]) * kW / w;
       const double r2 = (qx - px) * (qx - px) + (qy - py) * (qy - py) + kZr * kZr;
       const double omega = kZr * kZr / (r2 * r2);
       num += omega * lit;

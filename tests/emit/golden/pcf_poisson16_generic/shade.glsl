@@ -121,7 +121,7 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 119
+#line 120
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -173,20 +173,25 @@ vec2 shadowc_rotate(vec2 tap, vec2 rot){ return vec2(rot . x * tap . x - rot . y
 #line 1 "lookup/pcf.glsl"
 #line 14
 float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< d ? 0.0 : 1.0;}
-#line 75
+#line 82
 float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot){
   float lit = 0.0;
 #line 87
-  for(int i = 0;i < shadowc_generic . pcfTaps;++ i)
-    lit += shadowc_litTexel(ivec2(floor(c + shadowc_rotate(shadowc_generic . poissonPcf[i], rot)*(0.5 * w))), d);
+  for(int i = 0;i < shadowc_generic . pcfTaps;++ i){
+    vec2 o = shadowc_rotate(shadowc_generic . poissonPcf[i], rot)* 0.5;
+#line 94
+    lit += shadowc_litTexel(ivec2(floor(c + o * w)), d);
+
+  }
+#line 100
   return lit / float(shadowc_generic . pcfTaps);
 
 }
-#line 96
-float shadowc_pcf(shadowc_Receiver r, float w){
-#line 101
-  return shadowc_pcfPoisson(r . texel, w, r . d, shadowc_rotation(r . worldPos));
 #line 107
+float shadowc_pcf(shadowc_Receiver r, float w){
+#line 112
+  return shadowc_pcfPoisson(r . texel, w, r . d, shadowc_rotation(r . worldPos));
+#line 118
 }
 #line 23 "lookup/shadowc_lookup.glsl"
 #line 54

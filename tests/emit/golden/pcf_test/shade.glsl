@@ -100,7 +100,7 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 119
+#line 120
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -121,21 +121,24 @@ float shadowc_bias(vec3 worldPos, vec3 worldNormal){
 #line 1 "lookup/pcf.glsl"
 #line 14
 float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< d ? 0.0 : 1.0;}
-#line 30
+#line 32
 float shadowc_pcfGrid(vec2 c, float w, float d, int n){
   float lit = 0.0;
-#line 43
+#line 37
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i){
       vec2 pos = c +(vec2(i, j)+ 0.5 - 0.5 * float(n))*(w / float(n));
+#line 45
       lit += shadowc_litTexel(ivec2(floor(pos)), d);
+
     }
+#line 51
   return lit / float(n * n);
 
 }
-#line 96
+#line 107
 float shadowc_pcf(shadowc_Receiver r, float w){
-#line 105
+#line 116
   return shadowc_pcfGrid(r . texel, w, r . d, 3);
 
 }

@@ -104,7 +104,7 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 119
+#line 120
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -183,20 +183,25 @@ vec2 shadowc_rotate(vec2 tap, vec2 rot){ return vec2(rot . x * tap . x - rot . y
 #line 1 "lookup/pcf.glsl"
 #line 14
 float shadowc_litTexel(ivec2 t, float d){ return shadowc_depthAt(t)< shadowc_tapDepth(t, d)? 0.0 : 1.0;}
-#line 75
+#line 82
 float shadowc_pcfPoisson(vec2 c, float w, float d, vec2 rot){
   float lit = 0.0;
 #line 87
-  for(int i = 0;i < 32;++ i)
-    lit += shadowc_litTexel(ivec2(floor(c + shadowc_rotate(shadowc_poissonPcf[i], rot)*(0.5 * w))), d);
+  for(int i = 0;i < 32;++ i){
+    vec2 o = shadowc_rotate(shadowc_poissonPcf[i], rot)* 0.5;
+#line 94
+    lit += shadowc_litTexel(ivec2(floor(c + o * w)), d);
+
+  }
+#line 100
   return lit / float(32);
 
 }
-#line 96
-float shadowc_pcf(shadowc_Receiver r, float w){
-#line 101
-  return shadowc_pcfPoisson(r . texel, w, r . d, shadowc_rotation(r . worldPos));
 #line 107
+float shadowc_pcf(shadowc_Receiver r, float w){
+#line 112
+  return shadowc_pcfPoisson(r . texel, w, r . d, shadowc_rotation(r . worldPos));
+#line 118
 }
 #line 23 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/pcss.glsl"
@@ -207,19 +212,20 @@ float shadowc_blockerSearch(shadowc_Receiver r, float w){
 #line 21
   vec2 rot = shadowc_rotation(r . worldPos);
   for(int i = 0;i < 16;++ i){
-#line 33
-    ivec2 t = ivec2(floor(r . texel + shadowc_rotate(shadowc_poissonBlocker[i], rot)*(0.5 * w)));
+    vec2 o = shadowc_rotate(shadowc_poissonBlocker[i], rot)* 0.5;
+    ivec2 t = ivec2(floor(r . texel + o * w));
     float z = shadowc_depthAt(t);
+#line 33
     if(z < shadowc_tapDepth(t, r . d)){
       sum += z;
       count += 1.0;
     }
 
   }
-#line 62
+#line 60
   return count > 0.0 ? sum / count : - 1.0;
 }
-#line 66
+#line 64
 float shadowc_pcss(shadowc_Receiver r){
   float zb = shadowc_blockerSearch(r, shadowc_searchTexels(r));
   if(zb < 0.0)return 1.0;

@@ -108,7 +108,7 @@ float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 119
+#line 120
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
@@ -140,24 +140,33 @@ float shadowc_litBilinear(vec2 pos, float d){
   float g = shadowc_litTexel(i + ivec2(1, 1), d);
   return mix(mix(a, b, f . x), mix(e, g, f . x), f . y);
 }
-#line 30
+#line 32
 float shadowc_pcfGrid(vec2 c, float w, float d, int n){
   float lit = 0.0;
-#line 43
+#line 37
   for(int j = 0;j < n;++ j)
     for(int i = 0;i < n;++ i){
       vec2 pos = c +(vec2(i, j)+ 0.5 - 0.5 * float(n))*(w / float(n));
+#line 45
       lit += shadowc_litTexel(ivec2(floor(pos)), d);
+
     }
+#line 51
   return lit / float(n * n);
 
 }
-#line 54
+#line 57
 float shadowc_pcfBilinearGrid(vec2 c, float w, float d, int n){
   float lit = 0.0;
-#line 67
+#line 62
   for(int j = 0;j < n;++ j)
-    for(int i = 0;i < n;++ i)lit += shadowc_litBilinear(c +(vec2(i, j)+ 0.5 - 0.5 * float(n))*(w / float(n)), d);
+    for(int i = 0;i < n;++ i){
+      vec2 pos = c +(vec2(i, j)+ 0.5 - 0.5 * float(n))*(w / float(n));
+#line 70
+      lit += shadowc_litBilinear(pos, d);
+
+    }
+#line 76
   return lit / float(n * n);
 
 }
