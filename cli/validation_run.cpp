@@ -172,7 +172,7 @@ int runValidation(const ValidationOptions& given) {
   settings.map = o.map;
   settings.referenceSamples = o.samples;
   settings.useCache = o.useCache;
-  settings.cascades = rt::cascadeConfigFromSpec(manifest.spec);  // a cascaded sun's atlas (cascade_setup.h)
+  rt::setFilterViews(settings, manifest.spec);  // a cascaded sun's or light-sampled spot's atlas
   progress(fmt::format("tracing the Embree reference ({}x{} pixels, {}x{} light samples)", o.size, o.size, o.samples,
                        o.samples)
                .c_str());

@@ -85,12 +85,11 @@ LightType planLight(const PlanScenes& scenes) {
   return first;
 }
 
-// The scenes of `base` prepared for the candidate's cascades (the reference shared), one per scene.
+// The scenes of `base` prepared for the candidate's light views (the reference shared), one per scene.
 std::vector<std::shared_ptr<const rt::PreparedScene>> scenesFor(rt::VulkanContext& ctx, const PlanScenes& base,
                                                                 const CompiledPasses& passes) {
-  const rt::CascadeConfig cascades = rt::cascadeConfigFromSpec(passes.manifest.spec);
   std::vector<std::shared_ptr<const rt::PreparedScene>> out;
-  for (const auto& p : base.prepared) out.push_back(rt::prepareSceneWithCascades(ctx, p, cascades));
+  for (const auto& p : base.prepared) out.push_back(rt::prepareSceneForFilter(ctx, p, passes.manifest.spec));
   return out;
 }
 

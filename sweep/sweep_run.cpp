@@ -195,9 +195,9 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
     rt::VulkanContext ctx(rt::VulkanOptions{o.device, o.validation});
     Progress progress(log, pending.size(), o.tty);
     std::shared_ptr<const rt::PreparedScene> prepared;
-    // The case's scene per cascade configuration its variants ask for (a cascaded sun filter's
-    // atlas, rt::prepareSceneWithCascades; the reference is traced once per case).
-    std::vector<std::shared_ptr<const rt::PreparedScene>> withCascades;
+    // The case's scene per light-view configuration its variants ask for (a cascaded sun's or a
+    // light-sampled spot's atlas, rt::prepareSceneForFilter; the reference is traced once per case).
+    std::vector<std::shared_ptr<const rt::PreparedScene>> withViews;
     size_t preparedCase = SIZE_MAX;
     for (const Job& job : pending) {
       const Variant& v = e.variants[job.variant];
@@ -233,16 +233,17 @@ SweepOutcome runSweep(const SweepSpec& spec, const SweepOptions& o, std::FILE* l
         if (!prepared->referenceCacheWarning.empty()) progress.note("warning: " + prepared->referenceCacheWarning);
         rt::writeVisibilityPng(o.outDir / refImage, prepared->reference, c.screen, c.screen);
         preparedCase = c.index;
-        withCascades = {prepared};
+        withViews = {prepared};
       }
       Row row;
       try {
-        const rt::CascadeConfig cascades = rt::cascadeConfigFromSpec(comp.passes->manifest.spec);
-        auto scene = std::find_if(withCascades.begin(), withCascades.end(),
-                                  [&](const auto& p) { return p->settings.cascades == cascades; });
-        if (scene == withCascades.end()) {
-          withCascades.push_back(rt::prepareSceneWithCascades(ctx, prepared, cascades));
-          scene = withCascades.end() - 1;
+        rt::SceneSettings views = prepared->settings;
+        rt::setFilterViews(views, comp.passes->manifest.spec);
+        auto scene = std::find_if(withViews.begin(), withViews.end(),
+                                  [&](const auto& p) { return rt::sameFilterViews(p->settings, views); });
+        if (scene == withViews.end()) {
+          withViews.push_back(rt::prepareSceneForFilter(ctx, prepared, comp.passes->manifest.spec));
+          scene = withViews.end() - 1;
         }
         rt::RunOptions ro;
         ro.warmup = spec.warmup;

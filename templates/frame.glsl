@@ -26,6 +26,9 @@ shadowc_Frame shadowc_frame();
 #include "frame_block.glsl"
 #endif
 #if !defined(SHADOWC_LIGHT_ORTHO) && !defined(SHADOWC_LIGHT_CUBE)  // spot; sun, point below
+#ifdef SHADOWC_LIGHT_SAMPLES
+#include "frame_light_samples.glsl"
+#endif
 // World position -> (uv, normalized depth d, view z).
 vec4 shadowc_lightSpace(vec3 worldPos) {
   vec3 p = (shadowc_frame().lightView * vec4(worldPos, 1.0)).xyz;

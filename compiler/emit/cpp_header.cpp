@@ -11,6 +11,7 @@
 #include <stdexcept>
 #include <vector>
 
+#include "emit/glsl_literal.h"
 #include "manifest/frame_uniforms.h"
 
 namespace shadowc {
@@ -258,6 +259,18 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
   // The map side the filter is planned for (`resolution`, docs/dsl.md): what to allocate; 0 = the engine's choice.
   const int planned = m.spec.is_object() && m.spec.contains("resolution") ? m.spec["resolution"].get<int>() : 0;
   out += fmt::format("inline constexpr std::uint32_t plannedMapSize = {};\n", planned);
+  // The light views to render (`light_samples`, docs/integration.md "Light samples"): view i from
+  // the light view translated by -width * lightViewOffsets[i], into tile (i % lightViewGrid,
+  // i / lightViewGrid) of the light-depth atlas. Only with light samples, so other headers are unchanged.
+  if (m.spec.is_object() && m.spec.contains("light_samples")) {
+    const nlohmann::json& v = m.spec["light_samples"];
+    out += fmt::format("inline constexpr std::uint32_t lightViewCount = {};\n", v["count"].get<int>());
+    out += fmt::format("inline constexpr std::uint32_t lightViewGrid = {};\n", v["grid"].get<int>());
+    out += "inline constexpr float lightViewOffsets[][2] = {";
+    for (const nlohmann::json& o : v["offsets"])
+      out += fmt::format("{{{}f, {}f}}, ", glslFloat(o[0].get<double>()), glslFloat(o[1].get<double>()));
+    out += "};\n";
+  }
   out += fmt::format(
       "\ninline constexpr Filter filter{{\n    {}, {}, {},\n    images, sizeof images / sizeof images[0],\n"
       "    passes, sizeof passes / sizeof passes[0],\n    {{{}, {}, {}, {}, {}, {}}},\n    {}, {}}};\n\n}}  // "

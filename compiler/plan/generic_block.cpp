@@ -15,7 +15,11 @@ namespace shadowc {
 namespace {
 
 // Integers the templates use in #if or as array sizes: they stay compile-time.
-constexpr std::string_view kStaticIntegers[] = {"SHADOWC_LAYERS", "SHADOWC_SAT_PIECES", "SHADOWC_UNIFORM_MAX_DEN"};
+// The light views are part of what an engine renders (the manifest's spec), so their count and
+// offsets stay compile-time too.
+constexpr std::string_view kStaticIntegers[] = {"SHADOWC_LAYERS", "SHADOWC_SAT_PIECES", "SHADOWC_UNIFORM_MAX_DEN",
+                                                "SHADOWC_LIGHT_SAMPLES", "SHADOWC_LIGHT_SAMPLE_GRID"};
+constexpr std::string_view kLightSampleTable = "shadowc_lightSampleOffsets";
 
 bool staysStatic(const Constant& c) {
   if (!std::holds_alternative<long long>(c.value) && !std::holds_alternative<Real>(c.value)) return true;
@@ -85,6 +89,10 @@ void makeGeneric(PassGraph& graph) {
   for (Table& t : values.tables) {
     if (const auto* u = std::get_if<UnrolledQuadtree>(&t)) {
       unrolledHeight = std::max(unrolledHeight, u->height);
+      continue;
+    }
+    if (const auto* p = std::get_if<PointTable>(&t); p && p->name == kLightSampleTable) {
+      tables.push_back(std::move(t));
       continue;
     }
     BlockMember m;

@@ -97,6 +97,21 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
     defInt("SHADOWC_CASCADE_GRID", cascadeGrid(s.cascades.count));
     defReal("SHADOWC_CASCADE_BLEND", s.cascades.blend);
   }
+  // Light samples: N hard views of a spot light, tiles of one atlas (lookup/light_samples.glsl);
+  // defined only with them. Their offsets on the light are a table (FilterSpec lightSampleOffsets).
+  check(s.lightSamples == 0 || (!sun && !cube && !moments && !s.earlyOutMinMax && s.blocker.kind == BlockerKind::None &&
+                                s.kernel.size == KernelSize::Fixed),
+        "light samples serve a spot's fixed-kernel depth filters (light_rules.cpp)");
+  if (s.lightSamples > 0) {
+    defInt("SHADOWC_LIGHT_SAMPLES", s.lightSamples);
+    defInt("SHADOWC_LIGHT_SAMPLE_GRID", lightSampleGrid(s.lightSamples));
+    out.tables.push_back(
+        PointTable{"shadowc_lightSampleOffsets",
+                   fmt::format("{} light views: centres of equal patches of the light, in light widths (docs/dsl.md "
+                               "\"light_samples\")",
+                               s.lightSamples),
+                   lightSampleOffsets(s.lightSamples, s.light.shape == LightShape::Disk)});
+  }
   if (!s.light.sizeFromScene && cube)
     defReal("SHADOWC_LIGHT_WIDTH", 2.0 * s.light.size);  // the sphere's diameter
   else if (!s.light.sizeFromScene)
@@ -182,7 +197,9 @@ Specialization planShadeSpecialization(const FilterSpec& s) {
   defBool("SHADOWC_BACKFACE_SHADOWED", s.backfaceShadowed);
   // Form-factor weights (kernel.glsl): a spot light's only; defined only when on, so unweighted
   // filters emit what they did.
-  if (s.formFactorWeights && !sun && !cube) defBool("SHADOWC_WEIGHTED", true);
+  // With light samples the views are weighted instead (light_samples.glsl), each one's kernel not.
+  if (s.formFactorWeights && !sun && !cube && s.lightSamples == 0) defBool("SHADOWC_WEIGHTED", true);
+  if (s.formFactorWeights && s.lightSamples > 0) defBool("SHADOWC_LIGHT_SAMPLES_WEIGHTED", true);
   // The early out must cover the blur footprint too (shadowc_lookup.glsl, shadowc_influenceRect).
   if (s.earlyOutMinMax && moments && s.prefilter.blur != BlurKind::None && s.prefilter.blurRadius > 0)
     defInt("SHADOWC_EARLY_OUT_GROW", s.prefilter.blurRadius);

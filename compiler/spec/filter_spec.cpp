@@ -157,6 +157,34 @@ int cascadeGrid(int count) {
   return g;
 }
 
+int lightSampleGrid(int count) {
+  int k = 1;
+  while (k * k < count) ++k;
+  return k;
+}
+
+std::vector<std::pair<double, double>> lightSampleOffsets(int count, bool disk) {
+  const int k = lightSampleGrid(count);
+  std::vector<std::pair<double, double>> out;
+  for (int i = 0; i < count; ++i) {
+    // The cell centre in [-1, 1]^2.
+    const double a = 2.0 * ((i % k) + 0.5) / k - 1.0, b = 2.0 * ((i / k) + 0.5) / k - 1.0;
+    if (!disk) {
+      out.emplace_back(0.5 * a, 0.5 * b);
+      continue;
+    }
+    // Shirley & Chiu 1997's concentric map: square rings onto disk rings, area-preserving, so every
+    // sample still stands for an equal patch of the light.
+    double r = 0, phi = 0;
+    if (std::abs(a) > std::abs(b))
+      r = a, phi = M_PI / 4 * (b / a);
+    else if (b != 0)
+      r = b, phi = M_PI / 2 - M_PI / 4 * (a / b);
+    out.emplace_back(0.5 * r * std::cos(phi), 0.5 * r * std::sin(phi));
+  }
+  return out;
+}
+
 double sunPenumbraSlope(double angleDegrees) { return 2.0 * std::tan(0.5 * angleDegrees * M_PI / 180.0); }
 
 nlohmann::ordered_json specToJson(const FilterSpec& s) {
@@ -228,6 +256,14 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
                       {"lambda", s.cascades.lambda},
                       {"blend", s.cascades.blend},
                       {"grid", cascadeGrid(s.cascades.count)}};
+  // Written only with light samples, so every other manifest stays byte-identical. The offsets
+  // are the views an engine renders (docs/integration.md "Light samples").
+  if (s.lightSamples > 0) {
+    J offsets = J::array();
+    for (const auto& [x, y] : lightSampleOffsets(s.lightSamples, s.light.shape == LightShape::Disk))
+      offsets.push_back(J::array({x, y}));
+    j["light_samples"] = J{{"count", s.lightSamples}, {"grid", lightSampleGrid(s.lightSamples)}, {"offsets", offsets}};
+  }
   return j;
 }
 

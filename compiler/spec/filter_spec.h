@@ -8,6 +8,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "dsl/source_location.h"
@@ -57,6 +58,21 @@ struct CascadeSpec {
 };
 // Tiles per side of the atlas holding `count` cascades (1, 2x2 for 2..4, 3x3 for 5..8).
 int cascadeGrid(int count);
+
+// ---- light samples ---------------------------------------------------------------------------
+// `light_samples N` (docs/dsl.md "light_samples"): N = k^2 hard shadow maps, each rendered from the
+// centre of one of k x k equal-area patches of the light (a rect's grid cells, or their
+// concentric map onto a disk, Shirley & Chiu 1997), tiles of one atlas; the lookup filters each
+// with the filter's PCF and sums them with the weights of the shadowing term, so the estimate
+// converges to the reference as N grows. 0 = one map from the light's centre.
+inline constexpr int kMaxLightSamples = 256;
+// Tiles per side of the atlas: k = sqrt(N) (the checker accepts squares only).
+int lightSampleGrid(int count);
+// Where sample i sits on the light, in the light view's z = 0 plane, in units of the light's
+// width (x, y in [-0.5, 0.5]): the centre of grid cell (i mod k, i div k), mapped onto the disk of
+// diameter 1 for a disk light. The one definition the shader's table and the runtime's views
+// share (through the manifest's spec).
+std::vector<std::pair<double, double>> lightSampleOffsets(int count, bool disk);
 
 // ---- representation ----------------------------------------------------------------------
 // What the prefilter passes store per shadow-map texel.
@@ -218,6 +234,7 @@ struct FilterSpec {
   // light; `uniform` counts the visible fraction of the light (docs/dsl.md "weights").
   bool formFactorWeights = false;
   CascadeSpec cascades;  // a sun only (checker, light_rules.cpp)
+  int lightSamples = 0;  // a spot's depth filters only (checker, light_rules.cpp)
   // Largest shadow-map side (texels) the precision checks assume: SAT sums of W^2 texels
   // lower the EVSM exponent limit by ln(W^2)/2 (docs/dsl.md "Exponent limits"). The runtime must not
   // run the filter on a larger map. Setting `map_size`.

@@ -51,6 +51,23 @@ std::optional<const char*> cascadeRefusal(const FilterSpec& s) {
   return std::nullopt;
 }
 
+// Why light samples cannot serve this filter, or nullopt. Each view is a hard map of its own tile
+// (templates/lookup/light_samples.glsl), filtered by a fixed PCF kernel whose fetches are clamped
+// to the tile; the views themselves sample the light, so nothing sizes a kernel by the light.
+std::optional<const char*> lightSamplesRefusal(const FilterSpec& s) {
+  if (s.representation == Representation::Moments)
+    return "'moments' are prefiltered over the whole atlas (blur, mips, summed-area tables), whose boxes would mix "
+           "neighbouring views' tiles";
+  if (s.blocker.kind != BlockerKind::None)
+    return "a blocker search sizes one kernel for the whole light, which the views already sample";
+  if (s.kernel.size == KernelSize::Penumbra)
+    return "a penumbra-sized kernel ('kernel penumbra') widens each view's hard shadow by the whole light again; use "
+           "'kernel fixed(N)'";
+  if (s.earlyOutMinMax) return "the min-max pyramid's coarse levels span several views' tiles ('early_out minmax')";
+  if (s.contact.enabled) return "the contact path ('contact') belongs to moment filters";
+  return std::nullopt;
+}
+
 }  // namespace
 
 void checkLightRules(const FilterSpec& spec, const SettingsRead& given, dsl::DiagnosticSink& sink) {
@@ -69,6 +86,15 @@ void checkLightRules(const FilterSpec& spec, const SettingsRead& given, dsl::Dia
                spec.light.type == LightType::Point ? "an omnidirectional point light" : "a spot light");
     else if (auto why = cascadeRefusal(spec))
       reportAt(sink, *given.cascades, DiagId::cascadesNotImplemented, *why);
+  }
+  if (given.lightSamples && spec.lightSamples > 0) {
+    if (spec.light.type != LightType::Spot || spec.light.shape == LightShape::Point)
+      reportAt(sink, *given.lightSamples, DiagId::lightSamplesNeedSpot,
+               spec.light.type == LightType::Sun     ? "a sun (one orthographic map of a cone of directions)"
+               : spec.light.type == LightType::Point ? "an omnidirectional point light's cube"
+                                                     : "a point light of width 0");
+    else if (auto why = lightSamplesRefusal(spec))
+      reportAt(sink, *given.lightSamples, DiagId::lightSamplesNotImplemented, *why);
   }
 }
 

@@ -218,6 +218,7 @@ std::string printFilter(const FilterSpec& s) {
     args.push_back("blend: " + num(c.blend));
     lines.emplace_back("cascades", call(name(c.split), args));
   }
+  if (s.lightSamples > 0) lines.emplace_back("light_samples", std::to_string(s.lightSamples));
 
   std::string out = fmt::format("filter {} {{\n", s.name);
   for (const auto& [keyword, value] : lines)

@@ -20,9 +20,9 @@ using dsl::DiagId;
 using dsl::Setting;
 using dsl::Value;
 
-const Names kSettings = {"light",    "depth",    "moments",  "storage",    "blur",    "mips",      "blocker",
-                         "kernel",   "sampling", "bias",     "fallback",   "contact", "early_out", "backface",
-                         "bleeding", "weights",  "map_size", "resolution", "cascades"};
+const Names kSettings = {"light",    "depth",    "moments",  "storage",    "blur",     "mips",         "blocker",
+                         "kernel",   "sampling", "bias",     "fallback",   "contact",  "early_out",    "backface",
+                         "bleeding", "weights",  "map_size", "resolution", "cascades", "light_samples"};
 
 class SettingsReader : ValueReader {
  public:
@@ -105,6 +105,8 @@ class SettingsReader : ValueReader {
       if (auto c = choice(&v, what, {"uniform", "form_factor"})) out_.spec.formFactorWeights = *c == 1;
     } else if (s.keyword == "cascades")
       readCascades(s);
+    else if (s.keyword == "light_samples")
+      readLightSamples(s);
     else if (s.keyword == "map_size") {
       out_.mapSize = &s;
       if (auto n = integer(&v, what, 16, 16384)) out_.spec.mapSize = *n;
@@ -208,6 +210,21 @@ class SettingsReader : ValueReader {
       if (auto l = number(x, arg("blend", v), Range{0, 0.5})) c.blend = *l;
     }
     out_.spec.cascades = c;
+  }
+
+  // `light_samples N`: N = k^2 light views, the centres of a k x k grid of equal light patches
+  // (docs/dsl.md "light_samples"); 16 x 16 is the reference's own count.
+  void readLightSamples(const Setting& s) {
+    out_.lightSamples = &s;
+    auto n = integer(&s.value, "'light_samples'", 1, kMaxLightSamples,
+                     "in [1, 256] (k x k views of the light, tiles of one atlas)");
+    if (!n) return;
+    const int k = lightSampleGrid(*n);
+    if (k * k != *n) {
+      at(s.value, DiagId::lightSamplesNotSquare, *n, (k - 1) * (k - 1), k * k);
+      return;
+    }
+    out_.spec.lightSamples = *n;
   }
 
   void readDepth(const Setting& s) {

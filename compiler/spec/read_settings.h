@@ -18,7 +18,7 @@ struct SettingsRead {
   const dsl::Setting *light = nullptr, *representation = nullptr, *storage = nullptr, *blur = nullptr, *mips = nullptr,
                      *blocker = nullptr, *kernel = nullptr, *sampling = nullptr, *fallback = nullptr,
                      *contact = nullptr, *bleeding = nullptr, *cascades = nullptr, *weights = nullptr,
-                     *mapSize = nullptr, *resolution = nullptr;
+                     *lightSamples = nullptr, *mapSize = nullptr, *resolution = nullptr;
   const dsl::Setting* bias = nullptr;
   // Arguments whose presence changes a default or that a combination rule points at.
   const dsl::Value *exponent = nullptr, *negativeExponent = nullptr, *minVariance = nullptr, *split = nullptr,

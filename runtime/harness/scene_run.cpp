@@ -16,6 +16,7 @@ namespace {
 void fitAndRasterize(VulkanContext& ctx, PreparedScene& p) {
   p.setup = setupFrame(p.scene, p.settings.map, p.settings.screen, p.settings.screen, p.settings.cubeTanHalf);
   setupCascades(p.scene, p.settings.cascades, p.setup);
+  setupLightSamples(p.scene, p.settings.lightSamples, p.setup);
   p.raster = rasterize(ctx, p.scene, p.setup);
 }
 
@@ -58,16 +59,27 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
   return p;
 }
 
-std::shared_ptr<const PreparedScene> prepareSceneWithCascades(VulkanContext& ctx,
-                                                              std::shared_ptr<const PreparedScene> base,
-                                                              const CascadeConfig& cascades) {
-  if (base->settings.cascades == cascades) return base;
+void setFilterViews(SceneSettings& s, const nlohmann::json& spec) {
+  s.cascades = cascadeConfigFromSpec(spec);
+  s.lightSamples = lightSampleConfigFromSpec(spec);
+}
+
+bool sameFilterViews(const SceneSettings& a, const SceneSettings& b) {
+  return a.cascades == b.cascades && a.lightSamples == b.lightSamples;
+}
+
+std::shared_ptr<const PreparedScene> prepareSceneForFilter(VulkanContext& ctx,
+                                                           std::shared_ptr<const PreparedScene> base,
+                                                           const nlohmann::json& spec) {
+  SceneSettings settings = base->settings;
+  setFilterViews(settings, spec);
+  if (sameFilterViews(settings, base->settings)) return base;
   auto p = std::make_shared<PreparedScene>(*base);
-  p->settings.cascades = cascades;
-  fitAndRasterize(ctx, *p);  // setupCascades refuses cascades on a spot or point light (SceneError)
+  p->settings = settings;
+  fitAndRasterize(ctx, *p);  // refuses cascades on a spot or point light, light samples on a sun (SceneError)
   // Same camera, same G-buffer: the base's reference and mask hold for this frame too.
   if (p->raster.gbufferPosition.floats() != base->raster.gbufferPosition.floats())
-    throw std::logic_error("the cascades changed the camera's G-buffer of scene '" + base->scene.name + "'");
+    throw std::logic_error("the light views changed the camera's G-buffer of scene '" + base->scene.name + "'");
   return p;
 }
 
@@ -100,6 +112,12 @@ RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene) 
         "filter '{}' has {} cascades but scene '{}' was prepared with {}: prepare it with the manifest's cascades "
         "(SceneSettings::cascades = cascadeConfigFromSpec(manifest.spec))",
         passes.manifest.filter, cascadeConfigFromSpec(spec).count, scene.scene.name, scene.settings.cascades.count));
+  if (lightSampleConfigFromSpec(spec) != scene.settings.lightSamples)
+    throw std::invalid_argument(fmt::format(
+        "filter '{}' has {} light samples but scene '{}' was prepared with {}: prepare it with the manifest's views "
+        "(setFilterViews(settings, manifest.spec))",
+        passes.manifest.filter, lightSampleConfigFromSpec(spec).count, scene.scene.name,
+        scene.settings.lightSamples.count));
   RunInputs inputs;
   inputs.frame = scene.setup.frame;
   inputs.mapSize = scene.setup.mapSize;

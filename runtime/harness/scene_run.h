@@ -16,6 +16,7 @@
 #include "runtime/raster/rasterizer.h"
 #include "runtime/scene/cascade_setup.h"
 #include "runtime/scene/frame_setup.h"
+#include "runtime/scene/light_sample_setup.h"
 #include "runtime/scene/scene.h"
 
 namespace shadowc::rt {
@@ -36,7 +37,17 @@ struct SceneSettings {
   // A cascaded sun filter's cascades (cascadeConfigFromSpec of its manifest): the light depth is
   // then an atlas of cascades fitted to the camera; the reference does not depend on them.
   CascadeConfig cascades;
+  // A light-sampled spot filter's views (lightSampleConfigFromSpec of its manifest): the light
+  // depth is then an atlas of hard views from points on the light; the reference does not depend
+  // on them either.
+  LightSampleConfig lightSamples;
 };
+
+// The light views a filter's manifest asks for (its cascades, its light samples), set into `s`.
+// Throws std::invalid_argument on a malformed spec.
+void setFilterViews(SceneSettings& s, const nlohmann::json& spec);
+// True when scenes prepared with `a` and `b` have the same light views.
+bool sameFilterViews(const SceneSettings& a, const SceneSettings& b);
 
 // The scene side, computed once and reusable for many filters (a sweep runs every variant on it).
 struct PreparedScene {
@@ -61,13 +72,14 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, const Scen
 // reports scene errors before device errors); settings.scene is only its label.
 std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scene, const SceneSettings& settings,
                                                   const ReferenceProgressFn& progress = {});
-// `base` prepared for a filter with other cascades (cascadeConfigFromSpec of its manifest): the
-// frame fitted and the light depth rasterized again, the reference and geometry mask shared (the
-// camera and G-buffer do not depend on the cascades, so neither does the reference). `base`
-// itself when the cascades are already its own. What `sweep` and `plan` run cascaded filters on.
-std::shared_ptr<const PreparedScene> prepareSceneWithCascades(VulkanContext& ctx,
-                                                              std::shared_ptr<const PreparedScene> base,
-                                                              const CascadeConfig& cascades);
+// `base` prepared for a filter with other light views (setFilterViews of its manifest's spec:
+// cascades, light samples): the frame fitted and the light depth rasterized again, the reference
+// and geometry mask shared (the camera and G-buffer do not depend on the light views, so neither
+// does the reference). `base` itself when the views are already its own. What `sweep` and `plan`
+// run cascaded and light-sampled filters on.
+std::shared_ptr<const PreparedScene> prepareSceneForFilter(VulkanContext& ctx,
+                                                           std::shared_ptr<const PreparedScene> base,
+                                                           const nlohmann::json& spec);
 
 struct SceneRunResult {
   RunOutputs outputs;  // visibility, timing (when runs > 0)

@@ -302,16 +302,18 @@ HostImage renderCubeAtlas(VulkanContext& ctx, const Geometry& geometry, const Fr
   return HostImage::fromFloats(setup.mapSize, setup.mapSize, ImageFormat::R32F, atlas);
 }
 
-// A cascaded sun (runtime/scene/cascade_setup.h): each cascade rendered at its tile's size with its
-// own orthographic window, copied into tile (i mod G, i div G) of one atlas (texels outside every
-// tile keep "nothing hit"). Same light view, same linear depth range for every cascade.
-HostImage renderCascadeAtlas(VulkanContext& ctx, const Geometry& geometry, const FrameSetup& setup, PassSpec light) {
-  const uint32_t grid = uint32_t(setup.cascadeGrid), tile = setup.mapSize / grid;
-  HostImage atlas = HostImage::fromFloats(setup.mapSize, setup.mapSize, ImageFormat::R32F,
-                                          std::vector<float>(size_t(setup.mapSize) * setup.mapSize, 1.0f));
+// A cascaded sun (runtime/scene/cascade_setup.h) or a light-sampled spot (light_sample_setup.h):
+// view i rendered at its tile's size with its own clip matrix, copied into tile (i mod G, i div G)
+// of one atlas, tiles floor(mapSize / G) a side (texels outside every tile keep "nothing hit").
+// Same light-view z row, same linear depth range for every view.
+HostImage renderTileAtlas(VulkanContext& ctx, const Geometry& geometry, uint32_t mapSize, int gridSide,
+                          const glm::mat4* viewProj, int count, PassSpec light) {
+  const uint32_t grid = uint32_t(gridSide), tile = mapSize / grid;
+  HostImage atlas =
+      HostImage::fromFloats(mapSize, mapSize, ImageFormat::R32F, std::vector<float>(size_t(mapSize) * mapSize, 1.0f));
   light.width = light.height = tile;
-  for (int i = 0; i < setup.cascadeCount; ++i) {
-    std::memcpy(light.push.viewProj, glm::value_ptr(setup.cascadeViewProj[size_t(i)]), sizeof light.push.viewProj);
+  for (int i = 0; i < count; ++i) {
+    std::memcpy(light.push.viewProj, glm::value_ptr(viewProj[i]), sizeof light.push.viewProj);
     const HostImage t = std::move(renderOffscreen(ctx, geometry, light).at(0));
     const uint32_t x0 = uint32_t(i) % grid * tile, y0 = uint32_t(i) / grid * tile;
     for (uint32_t y = 0; y < tile; ++y)
@@ -339,9 +341,16 @@ RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup
   for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = setup.lightView[c][2];  // row 2 of a column-major matrix
   light.push.depthRange[0] = setup.nearPlane;
   light.push.depthRange[1] = setup.farPlane;
-  out.lightDepth = setup.cube                ? renderCubeAtlas(ctx, geometry, setup, light)
-                   : setup.cascadeCount > 0 ? renderCascadeAtlas(ctx, geometry, setup, light)
-                                            : std::move(renderOffscreen(ctx, geometry, light).at(0));
+  if (setup.cube)
+    out.lightDepth = renderCubeAtlas(ctx, geometry, setup, light);
+  else if (setup.cascadeCount > 0)
+    out.lightDepth = renderTileAtlas(ctx, geometry, setup.mapSize, setup.cascadeGrid, setup.cascadeViewProj.data(),
+                                     setup.cascadeCount, light);
+  else if (setup.lightSampleCount > 0)
+    out.lightDepth = renderTileAtlas(ctx, geometry, setup.mapSize, setup.lightSampleGrid,
+                                     setup.lightSampleViewProj.data(), setup.lightSampleCount, light);
+  else
+    out.lightDepth = std::move(renderOffscreen(ctx, geometry, light).at(0));
 
   PassSpec camera;
   camera.width = setup.width;

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <vector>
 
 #include "manifest/frame_uniforms.h"
 #include "runtime/scene/cube_setup.h"
@@ -37,6 +38,11 @@ struct FrameSetup {
   int cascadeCount = 0, cascadeGrid = 1;
   std::array<glm::mat4, kMaxCascades> cascadeViewProj{};
   std::array<float, kMaxCascades + 1> cascadeSplits{};  // camera depths, cascadeCount + 1 of them
+  // A light-sampled spot (light_sample_setup.h; 0 = one view from the centre): view i is rendered
+  // with lightSampleViewProj[i] into tile (i mod lightSampleGrid, i div lightSampleGrid) of the map,
+  // tiles of floor(mapSize / lightSampleGrid) texels.
+  int lightSampleCount = 0, lightSampleGrid = 1;
+  std::vector<glm::mat4> lightSampleViewProj;
 };
 
 // The light's orthonormal frame: z = light.direction, y = light.up made orthogonal to z,

@@ -112,6 +112,9 @@
 #ifndef SHADOWC_BACKFACE_SHADOWED
 #define SHADOWC_BACKFACE_SHADOWED 1  // the whole light behind the tangent plane -> 0 (shadowc_lookup.glsl)
 #endif
+#ifndef SHADOWC_LIGHT_SAMPLES_WEIGHTED
+#define SHADOWC_LIGHT_SAMPLES_WEIGHTED 0  // form-factor weights of the light views (light_samples.glsl)
+#endif
 #ifndef SHADOWC_WEIGHTED
 #define SHADOWC_WEIGHTED 0  // form-factor weights of a spot light's patches (kernel.glsl)
 #endif

@@ -22,11 +22,15 @@ float shadowc_lightWidth() {
 #endif
 }
 
+#ifdef SHADOWC_LIGHT_SAMPLES
+#include "lookup/light_sample_tile.glsl"  // the map is the light view's tile of the atlas
+#else
 ivec2 shadowc_mapSize() { return textureSize(shadowc_shadowDepth, 0); }
 
 float shadowc_depthAt(ivec2 t) { SHADOWC_COUNT(SHADOWC_WORK_DEPTH_FETCHES, 1)
   return texelFetch(shadowc_shadowDepth, clamp(t, ivec2(0), shadowc_mapSize() - 1), 0).r;
 }
+#endif
 
 // NaN-safe clamp of a width in texels to [1, SHADOWC_KERNEL_MAX_TEXELS]: comparisons with
 // NaN are false, so a NaN width becomes 1 texel.

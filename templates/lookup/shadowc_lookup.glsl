@@ -150,4 +150,7 @@ float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
 #ifdef SHADOWC_CASCADES
 #include "lookup/cascades.glsl"
 #endif
+#ifdef SHADOWC_LIGHT_SAMPLES
+#include "lookup/light_samples.glsl"
+#endif
 #endif

@@ -29,7 +29,7 @@ inline rt::Metrics validateWrittenPlan(rt::VulkanContext& ctx, const std::string
   settings.map = map;
   settings.referenceSamples = samples;
   settings.useCache = false;  // traced afresh, never the planner's (or a cached) reference
-  settings.cascades = rt::cascadeConfigFromSpec(compiled.artifact->manifest.spec);
+  rt::setFilterViews(settings, compiled.artifact->manifest.spec);
   const auto prepared = rt::prepareScene(ctx, settings);
   const rt::Metrics m = rt::runOnScene(ctx, compiled.artifact->passes(), *prepared).metrics;
   EXPECT_GT(m.compared, uint64_t(screen) * screen / 8) << "too few geometry pixels on " << scene;

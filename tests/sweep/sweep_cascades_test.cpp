@@ -1,5 +1,5 @@
 // `sweep` runs cascaded sun filters: each case's scene is prepared once, and again per
-// cascade configuration a variant's manifest asks for (rt::prepareSceneWithCascades: the atlas of
+// cascade configuration a variant's manifest asks for (rt::prepareSceneForFilter: the atlas of
 // cascades fitted to the camera, the reference shared). The rows must be what
 // tests/gpu/cascades_test.cpp measures for the same filters, sizes and scene: sun_outdoor_long at
 // screen 512, a 2048^2 atlas of 4 cascades, a 16^2 reference (there: 4 cascades 0.0918 vs one

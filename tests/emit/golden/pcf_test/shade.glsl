@@ -21,7 +21,7 @@ layout(set = 0, binding = 0, std140)uniform shadowc_FrameBlock {
 
 shadowc_Frame shadowc_frame(){ return shadowc_Frame(shadowc_frameBlock . lightView, shadowc_frameBlock . lightParams);}
 #line 27 "frame.glsl"
-#line 30
+#line 33
 vec4 shadowc_lightSpace(vec3 worldPos){
   vec3 p =(shadowc_frame(). lightView * vec4(worldPos, 1.0)). xyz;
   vec2 uv = 0.5 + 0.5 * p . xy /(p . z * shadowc_frame(). lightParams . x);
@@ -30,15 +30,15 @@ vec4 shadowc_lightSpace(vec3 worldPos){
 }
 
 float shadowc_viewZ(float d){ return shadowc_frame(). lightParams . y + d *(shadowc_frame(). lightParams . z - shadowc_frame(). lightParams . y);}
-#line 40
+#line 43
 float shadowc_lightSizeUV(float lightWidth){
   return lightWidth /(2.0 * shadowc_frame(). lightParams . y * shadowc_frame(). lightParams . x);
 }
-#line 46
+#line 49
 float shadowc_searchWidthUV(float lightWidth, float zr){
   return shadowc_lightSizeUV(lightWidth)*(zr - shadowc_frame(). lightParams . y)/ zr;
 }
-#line 52
+#line 55
 float shadowc_penumbraWidthUV(float lightWidth, float zr, float zb){
   return shadowc_lightSizeUV(lightWidth)* shadowc_frame(). lightParams . y *(zr - zb)/(zb * zr);
 }
@@ -68,15 +68,15 @@ float shadowc_lightWidth(){
   return max(shadowc_frame(). lightParams . w, 0.0);
 
 }
-
+#line 28
 ivec2 shadowc_mapSize(){ return textureSize(shadowc_shadowDepth, 0);}
 
 float shadowc_depthAt(ivec2 t){
   return texelFetch(shadowc_shadowDepth, clamp(t, ivec2(0), shadowc_mapSize()- 1), 0). r;
 }
-#line 33
-float shadowc_clampTexels(float w){ return(w >= 1.0)? min(w, 64.0): 1.0;}
 #line 37
+float shadowc_clampTexels(float w){ return(w >= 1.0)? min(w, 64.0): 1.0;}
+#line 41
 ivec4 shadowc_kernelRect(vec2 c, float w){
   int n = int(shadowc_clampTexels(w)+ 0.5);
   ivec2 lo = ivec2(floor(c - 0.5 * float(n)+ 0.5));
@@ -84,23 +84,23 @@ ivec4 shadowc_kernelRect(vec2 c, float w){
   ivec2 last = shadowc_mapSize()- 1;
   return ivec4(clamp(lo, ivec2(0), last), clamp(hi, ivec2(0), last));
 }
-#line 48
+#line 52
 vec4 shadowc_kernelBox(vec2 c, float w){
-#line 56
+#line 60
   ivec4 r = shadowc_kernelRect(c, w);
   return vec4(r . xy, r . zw + 1);
 
 }
-#line 62
+#line 66
 float shadowc_searchTexels(shadowc_Receiver r){
   return shadowc_clampTexels(shadowc_searchWidthUV(r . lightWidth, r . zr)* float(shadowc_mapSize(). x));
 }
-#line 68
+#line 72
 float shadowc_penumbraTexels(shadowc_Receiver r, float zBlocker){
   float zb = max(shadowc_viewZ(clamp(zBlocker, 0.0, 1.0)), shadowc_frame(). lightParams . y);
   return shadowc_clampTexels(shadowc_penumbraWidthUV(r . lightWidth, r . zr, zb)* float(shadowc_mapSize(). x));
 }
-#line 120
+#line 124
 float shadowc_unit(float v){ return(v >= 0.0)? min(v, 1.0): 0.0;}
 #line 17 "lookup/shadowc_lookup.glsl"
 #line 1 "lookup/bias.glsl"
