@@ -49,6 +49,17 @@ glm::mat4 lightViewMatrix(const AreaLight& light) {
   return m;
 }
 
+glm::mat4 spotClipMatrix(float tanHalfFov, float nearPlane, float farPlane) {
+  glm::mat4 proj(0.0f);
+  const float n = nearPlane, fa = farPlane;
+  proj[0][0] = 1.0f / tanHalfFov;
+  proj[1][1] = 1.0f / tanHalfFov;
+  proj[2][2] = fa / (fa - n);
+  proj[2][3] = 1.0f;
+  proj[3][2] = -fa * n / (fa - n);
+  return proj;
+}
+
 namespace {
 
 void fitSpot(const Scene& scene, FrameSetup& f) {
@@ -76,14 +87,7 @@ void fitSpot(const Scene& scene, FrameSetup& f) {
   // Vulkan clip for coverage: x_c = x / tan, y_c = y / tan (uv = 0.5 + 0.5 * ndc, row 0 = uv.y 0,
   // exactly frame.glsl's mapping), w_c = z, standard perspective depth in 0..1 (only for coverage;
   // the rasterizer stores the linear d itself).
-  glm::mat4 proj(0.0f);
-  const float n = f.nearPlane, fa = f.farPlane;
-  proj[0][0] = 1.0f / f.tanHalfFov;
-  proj[1][1] = 1.0f / f.tanHalfFov;
-  proj[2][2] = fa / (fa - n);
-  proj[2][3] = 1.0f;
-  proj[3][2] = -fa * n / (fa - n);
-  f.lightViewProj = proj * f.lightView;
+  f.lightViewProj = spotClipMatrix(f.tanHalfFov, f.nearPlane, f.farPlane) * f.lightView;
 }
 
 // A sun: the view origin sits on the bounding sphere upstream of the scene, so every vertex has

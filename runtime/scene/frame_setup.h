@@ -54,6 +54,11 @@ LightBasis lightBasis(const AreaLight& light);
 // World -> light view (origin at the light centre, +z along the light axis; frame.glsl).
 glm::mat4 lightViewMatrix(const AreaLight& light);
 
+// A spot light's Vulkan clip from its view: x_c = x / tan, y_c = y / tan (uv = 0.5 + 0.5 * ndc,
+// frame.glsl's mapping), w_c = z, perspective depth in 0..1 (coverage only: the rasterizer stores
+// linear depth itself).
+glm::mat4 spotClipMatrix(float tanHalfFov, float nearPlane, float farPlane);
+
 // The light frustum covers the scene's bounds as seen from the light centre; near/far are
 // fitted to the bounds (near clamped > 0). A sun's orthographic box covers every vertex, its
 // view origin placed on the scene's bounding sphere, upstream along the sun's direction.

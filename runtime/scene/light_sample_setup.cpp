@@ -56,13 +56,7 @@ void setupLightSamples(const Scene& scene, const LightSampleConfig& c, FrameSetu
       }
   constexpr float kFovMargin = 1.02f;  // setupFrame's
   f.tanHalfFov = std::max({f.tanHalfFov, maxTan * kFovMargin, 1e-6f});
-  glm::mat4 proj(0.0f);
-  const float n = f.nearPlane, fa = f.farPlane;
-  proj[0][0] = 1.0f / f.tanHalfFov;
-  proj[1][1] = 1.0f / f.tanHalfFov;
-  proj[2][2] = fa / (fa - n);
-  proj[2][3] = 1.0f;
-  proj[3][2] = -fa * n / (fa - n);
+  const glm::mat4 proj = spotClipMatrix(f.tanHalfFov, f.nearPlane, f.farPlane);
   f.lightViewProj = proj * f.lightView;
   f.lightSampleCount = c.count;
   f.lightSampleGrid = c.grid;

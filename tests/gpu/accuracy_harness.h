@@ -122,6 +122,17 @@ inline const rt::PreparedScene& sceneCase(rt::VulkanContext& ctx, const std::str
   return *(cache[key] = rt::prepareScene(ctx, settings));
 }
 
+// sceneCase prepared for the light views `passes` asks for (cascades, light samples:
+// rt::prepareSceneForFilter, the cached reference shared); the cached scene itself when it has them.
+inline std::shared_ptr<const rt::PreparedScene> sceneCaseFor(rt::VulkanContext& ctx, const std::string& name,
+                                                             uint32_t map, uint32_t screen, int samples,
+                                                             const CompiledPasses& passes) {
+  const rt::PreparedScene& base = sceneCase(ctx, name, map, screen, samples);
+  // The cache owns the base for the whole process: a non-owning pointer to it.
+  return rt::prepareSceneForFilter(ctx, std::shared_ptr<const rt::PreparedScene>(&base, [](const rt::PreparedScene*) {}),
+                                   passes.manifest.spec);
+}
+
 // Filter text `text` with its `keyword` setting line replaced by `keyword value`, or the setting
 // added before the closing brace when the text has none.
 inline std::string withSetting(const std::string& text, const std::string& keyword, const std::string& value) {
@@ -144,8 +155,8 @@ inline rt::Metrics runOnBuiltinScene(rt::VulkanContext& ctx, const std::string& 
   const CompiledFilter* cf = compileFilterCached(label, source);
   EXPECT_NE(cf, nullptr) << label;
   if (!cf) return {};
-  const rt::PreparedScene& sc = sceneCase(ctx, scene, map, screen, samples);
-  const rt::Metrics m = rt::runOnScene(ctx, cf->passes, sc).metrics;
+  const auto sc = sceneCaseFor(ctx, scene, map, screen, samples, cf->passes);
+  const rt::Metrics m = rt::runOnScene(ctx, cf->passes, *sc).metrics;
   EXPECT_GT(m.compared, screen * screen / 8) << "too few geometry pixels";
   EXPECT_EQ(m.nonFinite, 0u) << label;
   EXPECT_EQ(m.outOfRange, 0u) << label;

@@ -106,6 +106,8 @@ const std::vector<SampleCase>& cases() {
     {"vssm_minmax_early_out", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders"}},
     {"vssm_pcf_fallback", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders", "duck", "spider", "engine"}},
     {"vssm_form_factor", nullptr, nullptr, true, {"large_penumbra", "lamp_table", "two_planes", "duck"}},
+    {"light_samples16", nullptr, nullptr, true, {"large_penumbra", "lamp_table", "two_planes", "duck"}},
+    {"light_samples64", nullptr, nullptr, true, {"large_penumbra", "lamp_table", "two_planes", "duck"}},
     {"vssm_quadtree_table", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders"}},
     {"vssm_quadtree_unrolled", nullptr, nullptr, true, {"two_planes", "contact", "overlapping_occluders"}},
     {"msm_plain", nullptr, nullptr, true, {"two_planes", "stacked_planes", "small_penumbra"}},
@@ -142,8 +144,8 @@ TEST_P(AccuracyTest, AgainstEmbreeReference) {
       << c.sample << " folds its light size: compare a copy with size: scene";
   for (const char* scene : c.scenes) {
     SCOPED_TRACE(scene);
-    const rt::PreparedScene& sc = sceneCase(context(), scene, kMap, kScreen, kSamples);
-    const rt::Metrics m = rt::runOnScene(context(), cf->passes, sc).metrics;
+    const auto sc = sceneCaseFor(context(), scene, kMap, kScreen, kSamples, cf->passes);
+    const rt::Metrics m = rt::runOnScene(context(), cf->passes, *sc).metrics;
     ASSERT_GT(m.compared, kScreen * kScreen / 8) << "too few geometry pixels";
     EXPECT_EQ(m.nonFinite, 0u);
     EXPECT_EQ(m.outOfRange, 0u);

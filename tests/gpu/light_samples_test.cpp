@@ -29,9 +29,7 @@ rt::Metrics runViews(rt::VulkanContext& ctx, const std::string& scene, int views
   const CompiledFilter* cf = compileFilterCached(label, source);
   EXPECT_NE(cf, nullptr) << label;
   if (!cf) return {};
-  const rt::PreparedScene& base = sceneCase(ctx, scene, kMap, kScreen, kReference);
-  const auto prepared = rt::prepareSceneForFilter(
-      ctx, std::shared_ptr<const rt::PreparedScene>(&base, [](const rt::PreparedScene*) {}), cf->passes.manifest.spec);
+  const auto prepared = sceneCaseFor(ctx, scene, kMap, kScreen, kReference, cf->passes);
   EXPECT_EQ(prepared->setup.lightSampleCount, views);
   const rt::Metrics m = rt::runOnScene(ctx, cf->passes, *prepared).metrics;
   EXPECT_GT(m.compared, kScreen * kScreen / 8) << "too few geometry pixels";
