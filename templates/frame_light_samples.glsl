@@ -8,7 +8,8 @@
 // normalized depth, a function of z alone, is the light's). Its hard map is tile
 // (i mod G, i div G) of ONE atlas, as the cascades' are (frame_cascades.glsl), so the light-depth
 // image stays one 2D image; kernel.glsl reads the tile as the map (lookup/light_sample_tile.glsl).
-// Each view is a point of the light: its frame has width 0.
+// A view's frame keeps the light's width: its fixed kernel never reads it, and its backface test
+// (shadowc_lookup.glsl) is then only weaker than the views' own facing test (light_samples.glsl).
 #ifndef SHADOWC_FRAME_LIGHT_SAMPLES_GLSL
 #define SHADOWC_FRAME_LIGHT_SAMPLES_GLSL
 
@@ -22,19 +23,9 @@
 int shadowc_lightSample = 0;
 vec2 shadowc_lightSamplePoint = vec2(0.0);
 
-// The light's width in world units, read from the frame (or folded by the planner).
-float shadowc_lightSamplesWidth() {
-#ifdef SHADOWC_LIGHT_WIDTH
-  return SHADOWC_LIGHT_WIDTH;
-#else
-  return max(shadowc_frame().lightParams.w, 0.0);
-#endif
-}
-
 shadowc_Frame shadowc_lightSampleFrame() {
   shadowc_Frame f = shadowc_frame();
   f.lightView[3].xy -= shadowc_lightSamplePoint;
-  f.lightParams.w = 0.0;
   return f;
 }
 

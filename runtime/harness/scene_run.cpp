@@ -107,17 +107,14 @@ void checkLightType(const Manifest& manifest, LightType sceneLight, const std::s
 RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene) {
   checkLightType(passes.manifest, scene.scene.light.type, scene.scene.name);
   const nlohmann::json& spec = passes.manifest.spec;
-  if (cascadeConfigFromSpec(spec) != scene.settings.cascades)
+  SceneSettings wanted = scene.settings;
+  setFilterViews(wanted, spec);
+  if (!sameFilterViews(wanted, scene.settings))
     throw std::invalid_argument(fmt::format(
-        "filter '{}' has {} cascades but scene '{}' was prepared with {}: prepare it with the manifest's cascades "
-        "(SceneSettings::cascades = cascadeConfigFromSpec(manifest.spec))",
-        passes.manifest.filter, cascadeConfigFromSpec(spec).count, scene.scene.name, scene.settings.cascades.count));
-  if (lightSampleConfigFromSpec(spec) != scene.settings.lightSamples)
-    throw std::invalid_argument(fmt::format(
-        "filter '{}' has {} light samples but scene '{}' was prepared with {}: prepare it with the manifest's views "
-        "(setFilterViews(settings, manifest.spec))",
-        passes.manifest.filter, lightSampleConfigFromSpec(spec).count, scene.scene.name,
-        scene.settings.lightSamples.count));
+        "filter '{}' has {} cascades and {} light views but scene '{}' was prepared with {} and {}: prepare it with "
+        "the manifest's views (setFilterViews(settings, manifest.spec))",
+        passes.manifest.filter, wanted.cascades.count, wanted.lightSamples.count, scene.scene.name,
+        scene.settings.cascades.count, scene.settings.lightSamples.count));
   RunInputs inputs;
   inputs.frame = scene.setup.frame;
   inputs.mapSize = scene.setup.mapSize;

@@ -92,7 +92,7 @@ struct SceneRunResult {
 void checkLightType(const Manifest& manifest, LightType sceneLight, const std::string& sceneName);
 
 // The harness inputs of a prepared scene for a filter: its frame, light depth and G-buffer.
-// Throws std::invalid_argument when the filter's light type or cascades are not the scene's.
+// Throws std::invalid_argument when the filter's light type or light views (cascades, light samples) are not the scene's.
 RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene);
 
 SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, const PreparedScene& scene,

@@ -346,9 +346,9 @@ RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup
   else if (setup.cascadeCount > 0)
     out.lightDepth = renderTileAtlas(ctx, geometry, setup.mapSize, setup.cascadeGrid, setup.cascadeViewProj.data(),
                                      setup.cascadeCount, light);
-  else if (setup.lightSampleCount > 0)
+  else if (!setup.lightSampleViewProj.empty())
     out.lightDepth = renderTileAtlas(ctx, geometry, setup.mapSize, setup.lightSampleGrid,
-                                     setup.lightSampleViewProj.data(), setup.lightSampleCount, light);
+                                     setup.lightSampleViewProj.data(), int(setup.lightSampleViewProj.size()), light);
   else
     out.lightDepth = std::move(renderOffscreen(ctx, geometry, light).at(0));
 

@@ -12,10 +12,8 @@
 namespace shadowc::rt {
 namespace {
 
-// Margins: the frustum is widened by 2% so that silhouettes at the edge of the scene keep a
-// texel or so of slack, and near/far are pulled apart by 2% so every surface has a normalized
-// depth strictly inside (0, 1): d = 1 stays reserved for "nothing hit" (the cleared value).
-constexpr float kFovMargin = 1.02f;
+// Margins: near/far are pulled apart by 2% so every surface has a normalized depth strictly
+// inside (0, 1): d = 1 stays reserved for "nothing hit" (the cleared value); kFovMargin in the header.
 constexpr float kNearMargin = 0.98f;
 constexpr float kFarMargin = 1.02f;
 

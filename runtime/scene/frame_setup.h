@@ -38,11 +38,11 @@ struct FrameSetup {
   int cascadeCount = 0, cascadeGrid = 1;
   std::array<glm::mat4, kMaxCascades> cascadeViewProj{};
   std::array<float, kMaxCascades + 1> cascadeSplits{};  // camera depths, cascadeCount + 1 of them
-  // A light-sampled spot (light_sample_setup.h; 0 = one view from the centre): view i is rendered
+  // A light-sampled spot (light_sample_setup.h; none = one view from the centre): view i is rendered
   // with lightSampleViewProj[i] into tile (i mod lightSampleGrid, i div lightSampleGrid) of the map,
   // tiles of floor(mapSize / lightSampleGrid) texels.
-  int lightSampleCount = 0, lightSampleGrid = 1;
-  std::vector<glm::mat4> lightSampleViewProj;
+  int lightSampleGrid = 1;
+  std::vector<glm::mat4> lightSampleViewProj;  // one per view; empty = one view
 };
 
 // The light's orthonormal frame: z = light.direction, y = light.up made orthogonal to z,
@@ -53,6 +53,10 @@ struct LightBasis {
 LightBasis lightBasis(const AreaLight& light);
 // World -> light view (origin at the light centre, +z along the light axis; frame.glsl).
 glm::mat4 lightViewMatrix(const AreaLight& light);
+
+// The light frustum is widened by 2% (a sun's box too) so that silhouettes at the edge of the scene
+// keep a texel or so of slack.
+inline constexpr float kFovMargin = 1.02f;
 
 // A spot light's Vulkan clip from its view: x_c = x / tan, y_c = y / tan (uv = 0.5 + 0.5 * ndc,
 // frame.glsl's mapping), w_c = z, perspective depth in 0..1 (coverage only: the rasterizer stores

@@ -54,11 +54,9 @@ void setupLightSamples(const Scene& scene, const LightSampleConfig& c, FrameSetu
         const glm::vec3 q = glm::vec3(v * glm::vec4(p, 1.0f));
         if (q.z > 0) maxTan = std::max({maxTan, std::abs(q.x) / q.z, std::abs(q.y) / q.z});
       }
-  constexpr float kFovMargin = 1.02f;  // setupFrame's
   f.tanHalfFov = std::max({f.tanHalfFov, maxTan * kFovMargin, 1e-6f});
   const glm::mat4 proj = spotClipMatrix(f.tanHalfFov, f.nearPlane, f.farPlane);
   f.lightViewProj = proj * f.lightView;
-  f.lightSampleCount = c.count;
   f.lightSampleGrid = c.grid;
   f.lightSampleViewProj.clear();
   for (const glm::mat4& v : views) f.lightSampleViewProj.push_back(proj * v);

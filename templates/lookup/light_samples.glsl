@@ -17,7 +17,7 @@
 float shadowc_visibility(vec3 worldPos, vec3 worldNormal) {
   vec3 p = (shadowc_frame().lightView * vec4(worldPos, 1.0)).xyz;
   vec3 n = mat3(shadowc_frame().lightView) * worldNormal;
-  float width = shadowc_lightSamplesWidth();
+  float width = shadowc_lightWidth();  // the same in every view's frame
   float lit = 0.0, total = 0.0;
   for (int i = 0; i < SHADOWC_LIGHT_SAMPLES; ++i) {
     vec2 point = shadowc_lightSampleOffsets[i] * width;

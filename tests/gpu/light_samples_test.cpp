@@ -30,7 +30,7 @@ rt::Metrics runViews(rt::VulkanContext& ctx, const std::string& scene, int views
   EXPECT_NE(cf, nullptr) << label;
   if (!cf) return {};
   const auto prepared = sceneCaseFor(ctx, scene, kMap, kScreen, kReference, cf->passes);
-  EXPECT_EQ(prepared->setup.lightSampleCount, views);
+  EXPECT_EQ(prepared->setup.lightSampleViewProj.size(), size_t(views));
   const rt::Metrics m = rt::runOnScene(ctx, cf->passes, *prepared).metrics;
   EXPECT_GT(m.compared, kScreen * kScreen / 8) << "too few geometry pixels";
   EXPECT_EQ(m.nonFinite, 0u) << label;
