@@ -9,12 +9,14 @@
 #include <cstdlib>
 #include <map>
 #include <memory>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "cli/commands.h"
 #include "runtime/executor/pass_forms.h"
+#include "sweep/cost_profile.h"
 #include "sweep/expand.h"
 #include "sweep/frontier_table.h"
 #include "sweep/merge.h"
@@ -27,9 +29,9 @@ namespace shadowc::cli {
 namespace {
 
 struct SweepArgs {
-  std::string spec, out, shard = "0/1", device, progress = "auto";
+  std::string spec, out, shard = "0/1", device, progress = "auto", costProfile;
   int jobs = 0;
-  bool validation = false, noReferenceCache = false;
+  bool validation = false, noReferenceCache = false, counters = false;
   std::vector<std::string> mergeDirs;
   std::string mergeOut;
 };
@@ -68,7 +70,11 @@ int finish(const sweep::Results& r, const std::filesystem::path& dir) {
 
 int runSweepCommand(const SweepArgs& a) {
   if (a.spec.empty()) throw std::invalid_argument("sweep: give a sweep description (samples/sweeps/default.json)");
-  const sweep::SweepSpec spec = sweep::loadSweepSpec(a.spec);
+  sweep::SweepSpec spec = sweep::loadSweepSpec(a.spec);
+  // A profile prices a row from its work counts, so it needs them; it is read before anything runs.
+  std::optional<sweep::CostProfile> profile;
+  if (!a.costProfile.empty()) profile = sweep::loadCostProfile(a.costProfile);
+  if (a.counters || profile) spec.counters = true;
   sweep::SweepOptions o;
   o.outDir = a.out;
   o.shard = sweep::parseShard(a.shard);
@@ -78,7 +84,17 @@ int runSweepCommand(const SweepArgs& a) {
   o.useReferenceCache = !a.noReferenceCache;
   o.tty = a.progress == "bar" ? 1 : a.progress == "lines" ? 0 : -1;
   if (const char* stop = std::getenv("SHADOWC_SWEEP_STOP_AFTER")) o.stopAfter = std::strtoul(stop, nullptr, 10);
-  const sweep::SweepOutcome outcome = sweep::runSweep(spec, o, stderr);
+  sweep::SweepOutcome outcome = sweep::runSweep(spec, o, stderr);
+  if (profile) {
+    size_t unpriced = 0;
+    for (sweep::Row& row : outcome.results.rows) {
+      row.predictedMs = profile->frameMs(sweep::costSample(row));
+      unpriced += row.predictedMs ? 0 : 1;
+    }
+    fmt::print(stderr, "sweep: ranked by the predicted frame on {} ({}){}\n", profile->device, a.costProfile,
+               unpriced ? fmt::format("; {} row(s) it cannot price are ranked by their measured median", unpriced)
+                        : std::string());
+  }
   printSkipped(outcome.results);
   const int rc = finish(outcome.results, o.outDir);
   // No row is no answer: a sweep whose every variant was refused (or failed) must not exit 0.
@@ -111,6 +127,10 @@ CommandRunner registerSweep(CLI::App& app) {
       ->capture_default_str();
   sub->add_option("--device", a->device, "Vulkan device: index or name substring (default: llvmpipe)");
   sub->add_flag("--validate", a->validation, "Enable the Khronos validation layer; any message fails the sweep");
+  sub->add_flag("--counters", a->counters,
+                "Also count every row's work (as \"counters\": true; docs/manifest.md \"Work counters\")");
+  sub->add_option("--cost-profile", a->costProfile,
+                  "Rank by the frame this device cost profile predicts from the rows' work counts (docs/cost.md)");
   sub->add_flag("--no-reference-cache", a->noReferenceCache, "Trace every Embree reference again (no cache)");
   addRenamedOption(sub, "--no-cache", "--no-reference-cache", /*takesValue=*/false);
   sub->add_option("--progress", a->progress, "Progress display: auto (bar on a terminal), bar, lines")

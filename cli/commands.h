@@ -10,14 +10,15 @@ namespace shadowc::cli {
 
 using CommandRunner = std::function<int()>;
 
-CommandRunner registerCompile(CLI::App& app);    // cmd_compile.cpp
-CommandRunner registerCheck(CLI::App& app);      // cmd_check.cpp
-CommandRunner registerValidate(CLI::App& app);   // cmd_validate.cpp
-CommandRunner registerDemo(CLI::App& app);       // cmd_demo.cpp
-CommandRunner registerStability(CLI::App& app);  // cmd_stability.cpp
-CommandRunner registerSweep(CLI::App& app);      // cmd_sweep.cpp
-CommandRunner registerAnalyze(CLI::App& app);    // cmd_analyze.cpp
-CommandRunner registerPlan(CLI::App& app);       // cmd_plan.cpp
+CommandRunner registerCompile(CLI::App& app);      // cmd_compile.cpp
+CommandRunner registerCheck(CLI::App& app);        // cmd_check.cpp
+CommandRunner registerValidate(CLI::App& app);     // cmd_validate.cpp
+CommandRunner registerDemo(CLI::App& app);         // cmd_demo.cpp
+CommandRunner registerStability(CLI::App& app);    // cmd_stability.cpp
+CommandRunner registerSweep(CLI::App& app);        // cmd_sweep.cpp
+CommandRunner registerAnalyze(CLI::App& app);      // cmd_analyze.cpp
+CommandRunner registerPlan(CLI::App& app);         // cmd_plan.cpp
+CommandRunner registerCostProfile(CLI::App& app);  // cmd_cost_profile.cpp
 
 // An option's old spelling, kept only to say its new one: one spelling for each option across
 // subcommands (docs/cli.md), so `--size 64` from an old script fails with a message naming

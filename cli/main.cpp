@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   add(registerSweep);
   add(registerAnalyze);
   add(registerPlan);
+  add(registerCostProfile);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -107,17 +107,20 @@ Expansion expand(const SweepSpec& spec) {
     for (const auto& p : f.params)
       if (!used.count(p.name))
         e.warnings.push_back(fmt::format("parameter '{}' of filter '{}' is not used", p.name, f.name));
-  for (const SceneEntry& scene : spec.scenes)
+  std::vector<std::pair<uint32_t, uint32_t>> sizes = spec.sizes;
+  if (sizes.empty())
     for (uint32_t screen : spec.screens)
-      for (uint32_t map : spec.maps) {
-        Case c;
-        c.index = e.cases.size();
-        c.scene = scene;
-        c.screen = screen;
-        c.map = map;
-        c.label = fmt::format("{} {}px map {}", scene.label, screen, map);
-        e.cases.push_back(std::move(c));
-      }
+      for (uint32_t map : spec.maps) sizes.emplace_back(screen, map);
+  for (const SceneEntry& scene : spec.scenes)
+    for (const auto& [screen, map] : sizes) {
+      Case c;
+      c.index = e.cases.size();
+      c.scene = scene;
+      c.screen = screen;
+      c.map = map;
+      c.label = fmt::format("{} {}px map {}", scene.label, screen, map);
+      e.cases.push_back(std::move(c));
+    }
   return e;
 }
 

@@ -38,14 +38,18 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
     std::vector<size_t> shown = allRows ? members : frontier;
     if (allRows)
       std::stable_sort(shown.begin(), shown.end(),
-                       [&](size_t a, size_t b) { return res.rows[a].totalMs < res.rows[b].totalMs; });
+                       [&](size_t a, size_t b) { return rankedMs(res.rows[a]) < rankedMs(res.rows[b]); });
     size_t width = 7;
     for (size_t i : shown) width = std::max(width, res.rows[i].variant.size());
     const Row& first = res.rows[members.front()];
-    out +=
-        fmt::format("{} {}: {} of {} rows on the frontier (time = median frame total, RMSE vs the Embree reference)\n",
-                    allRows ? "trade-off" : "frontier", first.caseLabel, frontier.size(), members.size());
-    out += fmt::format("  {:>4}  {:<{}}  {:>10}  {:>19}  {:>9}  {}\n", "#", "variant", width, "total ms", interval,
+    const bool predicted =
+        std::any_of(members.begin(), members.end(), [&](size_t i) { return res.rows[i].predictedMs.has_value(); });
+    out += fmt::format(
+        "{} {}: {} of {} rows on the frontier (time = {}, RMSE vs the Embree reference)\n",
+        allRows ? "trade-off" : "frontier", first.caseLabel, frontier.size(), members.size(),
+        predicted ? "the cost profile's predicted frame; the measured median beside it" : "median frame total");
+    out += fmt::format("  {:>4}  {:<{}}  {}{:>10}  {:>19}  {:>9}  {}\n", "#", "variant", width,
+                       predicted ? fmt::format("{:>12}  ", "predicted ms") : std::string(), "total ms", interval,
                        "rmse", "slowest passes (ms)");
     size_t rank = 0;
     for (size_t i : shown) {
@@ -57,8 +61,11 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
           (allRows ? std::string(onFrontier.count(i) ? "*" : " ") : fmt::format("{}", ++rank)) + (tied ? "=" : "");
       const std::string range =
           r.total.n > 0 ? fmt::format("[{:.3f}, {:.3f}]", r.total.ciLowMs, r.total.ciHighMs) : std::string("-");
-      out += fmt::format("  {:>4}  {:<{}}  {:>10.3f}  {:>19}  {:>9.5f}  {}\n", mark, r.variant, width, r.totalMs, range,
-                         r.metrics.rmse, topPasses(r));
+      const std::string prediction = !predicted      ? std::string()
+                                     : r.predictedMs ? fmt::format("{:>12.3f}  ", *r.predictedMs)
+                                                     : fmt::format("{:>12}  ", "-");
+      out += fmt::format("  {:>4}  {:<{}}  {}{:>10.3f}  {:>19}  {:>9.5f}  {}\n", mark, r.variant, width, prediction,
+                         r.totalMs, range, r.metrics.rmse, topPasses(r));
     }
     if (allRows) out += "  (* = on the frontier: nothing else here is both faster and more accurate)\n";
   }

@@ -4,8 +4,13 @@
 
 namespace shadowc::sweep {
 
-double timeLowMs(const Row& row) { return row.total.n > 0 ? row.total.ciLowMs : row.totalMs; }
-double timeHighMs(const Row& row) { return row.total.n > 0 ? row.total.ciHighMs : row.totalMs; }
+double rankedMs(const Row& row) { return row.predictedMs ? *row.predictedMs : row.totalMs; }
+double timeLowMs(const Row& row) {
+  return row.predictedMs ? *row.predictedMs : row.total.n > 0 ? row.total.ciLowMs : row.totalMs;
+}
+double timeHighMs(const Row& row) {
+  return row.predictedMs ? *row.predictedMs : row.total.n > 0 ? row.total.ciHighMs : row.totalMs;
+}
 
 bool dominates(const Row& a, const Row& b) {
   const double aHigh = timeHighMs(a), bLow = timeLowMs(b);
@@ -63,7 +68,7 @@ std::map<size_t, std::vector<size_t>> frontiers(const std::vector<Row>& rows) {
     if (marks[i].membership != Membership::Off) out[rows[i].caseIndex].push_back(i);
   for (auto& [c, f] : out)
     std::stable_sort(f.begin(), f.end(), [&](size_t a, size_t b) {
-      if (rows[a].totalMs != rows[b].totalMs) return rows[a].totalMs < rows[b].totalMs;
+      if (rankedMs(rows[a]) != rankedMs(rows[b])) return rankedMs(rows[a]) < rankedMs(rows[b]);
       return rows[a].metrics.rmse < rows[b].metrics.rmse;
     });
   return out;

@@ -17,7 +17,10 @@
 
 namespace shadowc::sweep {
 
-// The interval a row's time is known to: [ci low, ci high], or [total, total] without one.
+// The time a row is ranked by: the predicted frame when a cost profile priced it, else the
+// measured median. A prediction is a point (it does not move with load); a measurement is known
+// to the interval [ci low, ci high], or [total, total] without one.
+double rankedMs(const Row& row);
 double timeLowMs(const Row& row);
 double timeHighMs(const Row& row);
 

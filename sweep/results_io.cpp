@@ -79,6 +79,7 @@ ordered_json rowToJson(const Row& r) {
   j["passes"] = std::move(passes);
   j["metrics"] = rt::toJson(r.metrics);
   if (r.work) j["work"] = rt::workJson(*r.work);
+  if (r.predictedMs) j["predicted_ms"] = *r.predictedMs;
   j["device"] = r.device;
   j["images"] = {{"result", r.resultImage}, {"error", r.errorImage}, {"reference", r.referenceImage}};
   j["filter_text"] = r.filterText;
@@ -118,6 +119,7 @@ Row rowFromJson(const json& j) {
           {p.at("name").get<std::string>(), p.at("kind").get<std::string>(), p.at("median_ms").get<double>()});
     r.metrics = metricsFromJson(j.at("metrics"));
     if (j.contains("work")) r.work = rt::workFromJson(j.at("work"));
+    if (j.contains("predicted_ms")) r.predictedMs = j.at("predicted_ms").get<double>();
     r.device = j.at("device").get<std::string>();
     r.resultImage = j.at("images").at("result").get<std::string>();
     r.errorImage = j.at("images").at("error").get<std::string>();
@@ -204,7 +206,7 @@ std::string resultsCsv(const Results& res) {
       "case,scene,screen,map,variant,base,shader,params,total_ms,rmse,mae,max_abs_error,p99_abs_error,light_bleeding,"
       "over_darkening,non_finite,frontier,passes_ms,content_hash,key,spec,specialized_over_generic,clock,rejected_runs,"
       "runs,total_min_ms,total_p90_ms,total_ci_low_ms,total_ci_high_ms,total_cv,frontier_tie,tied_with,"
-      "work_per_receiver\n";
+      "work_per_receiver,predicted_ms\n";
   const std::vector<ShaderPair> pairs = shaderPairs(res.rows);
   for (size_t i = 0; i < res.rows.size(); ++i) {
     const Row& r = res.rows[i];
@@ -218,13 +220,15 @@ std::string resultsCsv(const Results& res) {
     for (size_t k : mark.tiedWith) tied += (tied.empty() ? "" : ";") + res.rows[k].variant;
     out += fmt::format(
         "{},{},{},{},{},{},{},{},{:.4f},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{:.6g},{},{},{},{},{},{},{},{},{},{},{:.4f},"
-        "{:.4f},{:.4f},{:.4f},{:.4f},{},{},{}\n",
+        "{:.4f},{:.4f},{:.4f},{:.4f},{},{},{},{}\n",
         csvField(r.caseLabel), csvField(r.scene), r.screen, r.map, csvField(r.variant), csvField(r.base), r.shader,
         csvField(params), r.totalMs, m.rmse, m.mae, m.maxAbsError, m.p99AbsError, m.lightBleeding, m.overDarkening,
         m.nonFinite, mark.membership != Membership::Off ? 1 : 0, csvField(passes), r.contentHash, r.key,
         csvField(r.spec.dump()), ratio ? fmt::format("{:.4f}", *ratio) : "", csvField(r.clock), r.rejectedRuns, r.runs,
-        r.total.minMs, r.total.p90Ms, timeLowMs(r), timeHighMs(r), r.total.cv,
-        mark.membership == Membership::Tied ? 1 : 0, csvField(tied), csvField(r.work ? rt::workFields(*r.work) : ""));
+        r.total.minMs, r.total.p90Ms, r.total.n > 0 ? r.total.ciLowMs : r.totalMs,
+        r.total.n > 0 ? r.total.ciHighMs : r.totalMs, r.total.cv, mark.membership == Membership::Tied ? 1 : 0,
+        csvField(tied), csvField(r.work ? rt::workFields(*r.work) : ""),
+        r.predictedMs ? fmt::format("{:.4f}", *r.predictedMs) : "");
   }
   return out;
 }

@@ -43,6 +43,9 @@ struct Row {
   int rejectedRuns = 0;                     // implausible readings left out (docs/runtime.md "Rejected runs")
   rt::Metrics metrics;
   std::optional<rt::WorkCounts> work;  // the instrumented build's counts of one run ("counters": true)
+  // The frame a device cost profile predicts from `work` (`sweep --cost-profile`, docs/cost.md):
+  // when set, the frontier ranks by it (pareto.h rankedMs) and `totalMs` stays the measurement.
+  std::optional<double> predictedMs;
   std::string device;
   std::string resultImage, errorImage, referenceImage;  // relative to the output folder
 };

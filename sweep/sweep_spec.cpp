@@ -229,7 +229,7 @@ SweepSpec parseSweepSpec(const std::string& jsonText, const std::string& label, 
   }
   r.checkKeys(j, "",
               {"name", "filters", "params", "scenes", "screen", "map", "reference_samples", "runs", "warmup", "shaders",
-               "counters"});
+               "counters", "sizes"});
   SweepSpec s;
   s.name = j.contains("name") ? r.string(j["name"], "name") : std::filesystem::path(label).stem().string();
   if (!j.contains("filters") || !j["filters"].is_array() || j["filters"].empty())
@@ -249,6 +249,18 @@ SweepSpec parseSweepSpec(const std::string& jsonText, const std::string& label, 
                fmt::format("two scenes are named '{}'; give one a \"name\"", s.scenes[i].label));
   if (j.contains("screen")) s.screens = r.sizes(j["screen"], "screen");
   if (j.contains("map")) s.maps = r.sizes(j["map"], "map");
+  if (j.contains("sizes")) {
+    if (j.contains("screen") || j.contains("map"))
+      r.fail("sizes", "give either \"sizes\" (screen, map pairs) or \"screen\" and \"map\", not both");
+    const ordered_json& sz = j["sizes"];
+    if (!sz.is_array() || sz.empty())
+      r.fail("sizes", "expected a list of [screen, map] pairs: [[128, 512], [256, 1024]]");
+    for (size_t i = 0; i < sz.size(); ++i) {
+      const std::string at = fmt::format("sizes[{}]", i);
+      if (!sz[i].is_array() || sz[i].size() != 2) r.fail(at, "expected a [screen, map] pair");
+      s.sizes.emplace_back(r.sizes(sz[i][0], at + "[0]").front(), r.sizes(sz[i][1], at + "[1]").front());
+    }
+  }
   if (j.contains("reference_samples"))
     s.referenceSamples = r.integer(j["reference_samples"], "reference_samples", 1, 256);
   if (j.contains("runs")) {

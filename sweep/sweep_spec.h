@@ -60,6 +60,8 @@ struct SweepSpec {
   std::vector<SceneEntry> scenes;
   std::vector<uint32_t> screens{256};
   std::vector<uint32_t> maps{1024};
+  // "sizes": (screen, map) pairs run instead of every screen with every map; empty = the product.
+  std::vector<std::pair<uint32_t, uint32_t>> sizes;
   int referenceSamples = 16;
   rt::RunCount runs = 5;  // a count, or "auto" (run_timing.h RunCount)
   int warmup = 2;

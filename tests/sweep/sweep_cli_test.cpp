@@ -334,7 +334,7 @@ TEST(SweepCli, CountersKeepEachRowsExactWork) {
   }
   ASSERT_EQ(fetches.count("pcf[taps=4]") + fetches.count("pcf[taps=16]"), 2u);
   const std::string csv = test::readFile(dir / "out/results.csv");
-  EXPECT_NE(csv.find(",work_per_receiver\n"), std::string::npos);
+  EXPECT_NE(csv.find(",work_per_receiver,predicted_ms\n"), std::string::npos);
   EXPECT_NE(csv.find("depth_fetches=16"), std::string::npos) << csv;
   const std::string report = test::readFile(dir / "out/report.html");
   EXPECT_NE(report.find("shade work per receiver"), std::string::npos);

@@ -58,6 +58,19 @@ TEST(SweepSpec, ErrorsNameTheField) {
   EXPECT_EQ(errorOf(R"({"filters": [{)" + kFilter + R"(}], "scenes": ["two_planes"], "params": {"k": [1]}})"), "");
 }
 
+TEST(SweepSpec, SizesArePairsNotAProduct) {
+  const std::string base = R"({"filters": [{)" + kFilter + R"(}], "scenes": ["two_planes"], "params": {"k": [1]}, )";
+  const Expansion pairs = expand(parse(base + R"("sizes": [[128, 512], [256, 1024], [512, 2048]]})"));
+  ASSERT_EQ(pairs.cases.size(), 3u);
+  EXPECT_EQ(pairs.cases[0].label, "two_planes 128px map 512");
+  EXPECT_EQ(pairs.cases[2].screen, 512u);
+  EXPECT_EQ(pairs.cases[2].map, 2048u);
+  // The sibling: the same sides as lists give their product.
+  EXPECT_EQ(expand(parse(base + R"("screen": [128, 256, 512], "map": [512, 1024, 2048]})")).cases.size(), 9u);
+  EXPECT_NE(errorOf(base + R"("sizes": [[128, 512]], "map": 1024})").find("sizes: give either"), std::string::npos);
+  EXPECT_NE(errorOf(base + R"("sizes": [[128]]})").find("sizes[0]: expected a [screen, map] pair"), std::string::npos);
+}
+
 TEST(FilterText, SetReplacesAddsAndRemoves) {
   const std::string base =
       "# c\nfilter f {\n    moments linear(layers: 2,\n                   overlap: 0.1)   # spans lines\n"
