@@ -24,6 +24,7 @@
 #include "runtime/executor/pass_forms.h"
 #include "runtime/images/atomic_file.h"
 #include "runtime/vulkan/vulkan_context.h"
+#include "sweep/cost_profile.h"
 #include "sweep/sweep_row.h"
 
 namespace shadowc::cli {
@@ -44,7 +45,7 @@ CommandRunner registerPlan(CLI::App& app) {
   struct Options {
     std::vector<std::string> scenes;
     double maxRmse = -1, budgetMs = -1;
-    std::string out, model, calibrate, report, device, sweepDir = "plan-sweep", fromSweep, writeSweep;
+    std::string out, model, calibrate, report, device, sweepDir = "plan-sweep", fromSweep, writeSweep, costProfile;
     uint32_t screen = 256, map = 1024, maxMap = 0;
     int samples = 16, warmup = 2;
     rt::RunCount runs = 5;
@@ -66,6 +67,7 @@ CommandRunner registerPlan(CLI::App& app) {
     s += fmt::format(" --screen {} --map {} --samples {} --runs {} --warmup {}", o->screen, o->map, o->samples,
                      rt::toString(o->runs), o->warmup);
     if (o->maxMap > 0) s += fmt::format(" --max-map {}", o->maxMap);
+    if (!o->costProfile.empty()) s += " --cost-profile " + o->costProfile;
     if (!o->out.empty()) s += " -o " + o->out;
     return s;
   };
@@ -100,6 +102,8 @@ CommandRunner registerPlan(CLI::App& app) {
   sub->add_option("--write-sweep", o->writeSweep,
                   "Write the calibration sweep's description (for `shadowc sweep FILE -o DIR`) and exit");
   sub->add_option("--device", o->device, "Vulkan device: index or name substring (default: llvmpipe)");
+  sub->add_option("--cost-profile", o->costProfile,
+                  "Time confirmations by this device cost profile's prediction from exact work counts (docs/cost.md)");
   return [o, commandLine]() -> int {
     if (o->screen == 0 || o->map == 0 || o->samples < 1 || !o->runs.any() || o->warmup < 0)
       throw std::invalid_argument("--screen, --map, --samples and --runs must be positive, --warmup >= 0");
@@ -151,6 +155,8 @@ CommandRunner registerPlan(CLI::App& app) {
       throw std::invalid_argument("plan: give --max-rmse E, --budget-ms T or both");
     const planning::PlanModel model = planning::loadModel(o->model);
     planning::PlanRequest r;
+    if (!o->costProfile.empty())
+      r.costProfile = std::make_shared<const sweep::CostProfile>(sweep::loadCostProfile(o->costProfile));
     r.scenes = o->scenes;
     if (o->maxRmse >= 0) r.maxRmse = o->maxRmse;
     if (o->budgetMs >= 0) r.budgetMs = o->budgetMs;
@@ -169,14 +175,25 @@ CommandRunner registerPlan(CLI::App& app) {
       rt::writeFileAtomically(o->out, p.text);
       fmt::print("planned  {} -> {}\n", p.chosen.name, o->out);
       if (!p.mapReason.empty()) fmt::print("  {}\n", p.mapReason);
+      const bool predicted = !p.measured.measuredMs.empty();
       for (size_t i = 0; i < p.stats.size(); ++i)
-        fmt::print("  {:<24} rmse {:.4f}  {:.2f} ms\n", p.stats[i].scene, p.measured.rmse[i], p.measured.ms[i]);
-      fmt::print("  worst scene's time {:.2f} ms, 95% interval [{:.2f}, {:.2f}]\n", p.measured.worstMs,
-                 p.measured.worstLowMs, p.measured.worstHighMs);
+        fmt::print("  {:<24} rmse {:.4f}  {:.3f} ms{}\n", p.stats[i].scene, p.measured.rmse[i], p.measured.ms[i],
+                   predicted ? fmt::format(" predicted on {} (measured here {:.2f} ms)", p.measured.profileDevice,
+                                           p.measured.measuredMs[i])
+                             : std::string());
+      if (predicted)
+        fmt::print("  worst scene's time {:.3f} ms, predicted on {} from its work counts\n", p.measured.worstMs,
+                   p.measured.profileDevice);
+      else
+        fmt::print("  worst scene's time {:.2f} ms, 95% interval [{:.2f}, {:.2f}]\n", p.measured.worstMs,
+                   p.measured.worstLowMs, p.measured.worstHighMs);
       fmt::print("tried   ");
       for (const auto& t : p.tried)
-        fmt::print(" {} ({:.4f}, {:.2f} ms [{:.2f}, {:.2f}])", t.variant, t.worstRmse, t.worstMs, t.worstLowMs,
-                   t.worstHighMs);
+        if (predicted)
+          fmt::print(" {} ({:.4f}, {:.3f} ms predicted)", t.variant, t.worstRmse, t.worstMs);
+        else
+          fmt::print(" {} ({:.4f}, {:.2f} ms [{:.2f}, {:.2f}])", t.variant, t.worstRmse, t.worstMs, t.worstLowMs,
+                     t.worstHighMs);
       fmt::print("\n");
     } catch (const planning::PlanError& e) {
       std::fflush(stdout);

@@ -92,7 +92,9 @@ int runSweepCommand(const SweepArgs& a) {
       unpriced += row.predictedMs ? 0 : 1;
     }
     fmt::print(stderr, "sweep: ranked by the predicted frame on {} ({}){}\n", profile->device, a.costProfile,
-               unpriced ? fmt::format("; {} row(s) it cannot price are ranked by their measured median", unpriced)
+               unpriced ? fmt::format("; {} row(s) it cannot price (a pass it was not fitted on) are left off the "
+                                      "frontier",
+                                      unpriced)
                         : std::string());
   }
   printSkipped(outcome.results);

@@ -128,12 +128,13 @@ bool replacesChosen(const Measurement& candidate, const Measurement& chosen, boo
 
 Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
                              const PlanModel& model, int warmup, const rt::RunCount& runs,
-                             std::map<std::string, Measurement>* cache) {
+                             std::map<std::string, Measurement>* cache, const sweep::CostProfile* profile) {
   DescribeOptions d;
   d.slopeBias = useSlopeBias(scenes.stats, model.rules);
   d.contactEpsilon = scenes.stats.empty() ? 0.01 : scenes.stats[0].contactEpsilon;
   d.light = planLight(scenes);
-  const std::string key = measurementKey(c.name, scenes, d.slopeBias);
+  const std::string key =
+      measurementKey(c.name, scenes, d.slopeBias) + (profile ? "|profile " + profile->device : std::string());
   if (cache) {
     auto it = cache->find(key);
     if (it != cache->end()) return it->second;
@@ -142,8 +143,17 @@ Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const P
   const driver::Result r = driver::compileSpec(candidateSpec(c, d));
   if (!r.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile:\n" + r.log + text);
   const CompiledPasses passes = r.artifact->passes();
+  std::optional<CompiledPasses> counted;  // the instrumented build, for the profile's counts
+  if (profile) {
+    driver::Options counting;
+    counting.counters = true;
+    const driver::Result rc = driver::compileSpec(candidateSpec(c, d), counting);
+    if (!rc.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile counted:\n" + rc.log);
+    counted = rc.artifact->passes();
+  }
   Measurement m;
   m.variant = c.name;
+  if (profile) m.profileDevice = profile->device;
   for (const auto& prepared : scenesFor(ctx, scenes, passes)) {
     rt::RunOptions options;
     options.warmup = warmup;
@@ -151,11 +161,29 @@ Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const P
     const rt::SceneRunResult run = rt::runOnScene(ctx, passes, *prepared, options);
     m.rmse.push_back(run.metrics.rmse);
     const rt::TimingResult& t = *run.outputs.timing;
-    m.ms.push_back(t.totalMs);
+    double ms = t.totalMs, low = t.stats.n > 0 ? t.stats.ciLowMs : t.totalMs,
+           high = t.stats.n > 0 ? t.stats.ciHighMs : t.totalMs;
+    if (profile) {
+      sweep::CostSample s;
+      s.variant = c.name;
+      s.screen = prepared->settings.screen;
+      s.map = prepared->settings.map;
+      for (const auto& p : t.passes) s.passes.push_back({p.name, p.kind, p.medianMs});
+      s.totalMs = t.totalMs;
+      s.work = rt::runOnScene(ctx, *counted, *prepared, {}).outputs.work;
+      s.momentChannels = sweep::momentChannelsOfSpec(passes.manifest.spec);
+      const std::optional<double> predicted = profile->frameMs(s);
+      if (!predicted)
+        throw PlanError(fmt::format("the cost profile for {} cannot price {}: a pass it was not fitted on ({})",
+                                    profile->device, c.name, "docs/cost.md"));
+      m.measuredMs.push_back(t.totalMs);
+      ms = low = high = *predicted;
+    }
+    m.ms.push_back(ms);
     m.worstRmse = std::max(m.worstRmse, run.metrics.rmse);
-    m.worstMs = std::max(m.worstMs, t.totalMs);
-    m.worstLowMs = std::max(m.worstLowMs, t.stats.n > 0 ? t.stats.ciLowMs : t.totalMs);
-    m.worstHighMs = std::max(m.worstHighMs, t.stats.n > 0 ? t.stats.ciHighMs : t.totalMs);
+    m.worstMs = std::max(m.worstMs, ms);
+    m.worstLowMs = std::max(m.worstLowMs, low);
+    m.worstHighMs = std::max(m.worstHighMs, high);
   }
   if (cache) (*cache)[key] = m;
   return m;
@@ -344,12 +372,16 @@ PlanResult planOnScenes(rt::VulkanContext& ctx, const PlanRequest& request, cons
     // faster than the best measured (rules.confirmTimeSlack); the fastest within the bound wins.
     if (chosen && !budgetOnly) {
       if (stage(o) > 1) break;
-      if (o.ms > result.measured.worstMs * model.rules.confirmTimeSlack) continue;
+      // With a cost profile the measured times are another device's: the slack is on the model's
+      // own predictions, so which candidates are confirmed does not move with this machine's load.
+      const double best = request.costProfile ? chosen->ms : result.measured.worstMs;
+      if (o.ms > best * model.rules.confirmTimeSlack) continue;
     }
     if (chosen && budgetOnly && stage(o) > 0) break;  // with only a budget, compare the predicted-ok ones
     if (request.log)
       request.log(fmt::format("confirming {} (predicted {:.4f} rmse, {:.2f} ms)", o.c->name, o.rmse, o.ms));
-    const Measurement m = measureCandidate(ctx, *o.c, scenes, model, request.warmup, request.runs, cache);
+    const Measurement m =
+        measureCandidate(ctx, *o.c, scenes, model, request.warmup, request.runs, cache, request.costProfile.get());
     result.tried.push_back(m);
     triedOptions.push_back(&o);
     if (const auto pick = chooseMeasured(result.tried, request.maxRmse, request.budgetMs)) {

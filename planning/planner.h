@@ -19,6 +19,7 @@
 #include "planning/scene_analysis.h"
 #include "runtime/executor/run_timing.h"
 #include "runtime/harness/scene_run.h"
+#include "sweep/cost_profile.h"
 
 namespace shadowc::rt {
 class VulkanContext;
@@ -49,6 +50,10 @@ struct PlanRequest {
   int samples = 16;     // reference light samples per axis
   int warmup = 2;
   rt::RunCount runs = 5;  // a count, or auto (runtime/executor/run_timing.h)
+  // `--cost-profile`: confirmations are timed by the frame this device profile predicts from
+  // their exact work counts (docs/cost.md), not by this machine's clock, so the plan is the named
+  // device's and the same under any load; the measured medians are kept beside.
+  std::shared_ptr<const sweep::CostProfile> costProfile;
   std::string filterName = "planned";
   std::string command;                          // echoed in the written file's header
   std::function<void(const std::string&)> log;  // progress lines (stderr)
@@ -63,6 +68,10 @@ struct Measurement {
   // interval [lo_i, hi_i], the largest median is inside [max lo_i, max hi_i]. Equal to worstMs
   // for a measurement without intervals.
   double worstLowMs = 0, worstHighMs = 0;
+  // With a cost profile, `ms` and the worst times are its predictions (points: low = high) and
+  // these the measured medians; empty without one.
+  std::vector<double> measuredMs;
+  std::string profileDevice;
 };
 
 // The plan's pick among confirmed candidates, as a rule on the set, so that the order they were
@@ -90,7 +99,8 @@ PlanScenes preparePlanScenes(rt::VulkanContext& ctx, const std::vector<std::stri
 std::string measurementKey(const std::string& variant, const PlanScenes& scenes, bool slopeBias);
 Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const PlanScenes& scenes,
                              const PlanModel& model, int warmup, const rt::RunCount& runs,
-                             std::map<std::string, Measurement>* cache = nullptr);
+                             std::map<std::string, Measurement>* cache = nullptr,
+                             const sweep::CostProfile* profile = nullptr);
 
 // Why each feature may or may not be used: the statistic and whether it rules the feature out.
 struct FeatureVerdict {

@@ -9,8 +9,10 @@ profiles predict"). Every command it runs is printed in the section.
 The sweeps cache their rows in --out (build/cost-sweep, build/h200-counts-*): a rerun measures only
 what changed. Calibrate on a quiet machine: the lavapipe rows are timed."""
 import argparse
+import json
 import os
 import re
+import shlex
 import subprocess
 import sys
 
@@ -22,7 +24,7 @@ LINE = re.compile(r"^(.*?): (\d+) frames, median \|ln\(predicted/measured\)\| ([
 
 
 def run(cmd, commands):
-    commands.append(" ".join(cmd))
+    commands.append(shlex.join(cmd))
     out = subprocess.run(cmd, check=True, capture_output=True, text=True).stdout
     sys.stdout.write(out)
     return out
@@ -37,6 +39,35 @@ def qualities(out):
             worst = lines[i + 1].strip().removeprefix("worst: ") if i + 1 < len(lines) else ""
             rows.append((m.group(1), int(m.group(2)), float(m.group(4)), float(m.group(5)), int(m.group(6)), worst))
     return rows
+
+
+def rows_of(path):
+    with open(path) as f:
+        return json.load(f)["rows"]
+
+
+def shade(row):
+    return sum(p["median_ms"] for p in row["passes"] if p["kind"] == "shade")
+
+
+def same_counts(cal, lss_counts):
+    """What the counts do not see: the same work per receiver at different times."""
+    out = ["What the work counts do not see, from the same rows:", "",
+           "| device | variant | case | depth fetches / receiver | SAT fetches / receiver | shade ms |",
+           "|---|---|---|---|---|---|"]
+    counted = {(r["variant"], r["case"]): r for r in rows_of(os.path.join(lss_counts, "results.json"))}
+    for r in rows_of("bench/results/h200_light_size_study.json"):
+        if r["variant"] == "pcss[search=16,taps=16]" and r["case"].endswith("map 1024"):
+            w = counted[(r["variant"], r["case"])]["work"]["per_receiver"]
+            out.append(f"| NVIDIA H200 | {r['variant']} | {r['case']} | {w.get('depth_fetches', 0):.1f} | "
+                       f"{w.get('sat_fetches', 0):.1f} | {shade(r):.4f} |")
+    for r in rows_of(os.path.join(cal, "results.json")):
+        if r["variant"] in ("vssm_quadtree_table", "vssm_quadtree_unrolled") and r["case"].startswith("two_planes"):
+            w = r["work"]["per_receiver"]
+            out.append(f"| lavapipe | {r['variant']} | {r['case']} | {w.get('depth_fetches', 0):.1f} | "
+                       f"{w.get('sat_fetches', 0):.1f} | {shade(r):.2f} |")
+    out.append("")
+    return out
 
 
 def main():
@@ -84,6 +115,7 @@ def main():
     body.append("")
     body.append("A ratio is max(predicted, measured) / min(predicted, measured) of a whole frame (every pass summed).")
     body.append("")
+    body += same_counts(cal, counts["light_size_study"])
     write_section("docs/cost.md", "cost_report.py", "cost", "\n".join(body) + "\n")
 
 

@@ -23,8 +23,10 @@ constexpr const char* kShadeKind = "shade";
 
 double mtexels(uint32_t side) { return double(side) * side * 1e-6; }
 
-// The spec JSON's moments: the warp's stored channels (image_formats.h) times the layers.
-double channelsOfSpec(const json& spec) {
+}  // namespace
+
+// The warp's stored channels (image_formats.h) times the layers.
+double momentChannelsOfSpec(const nlohmann::json& spec) {
   if (!spec.is_object() || !spec.contains("moments") || !spec["moments"].is_object()) return 0;
   const json& m = spec["moments"];
   const std::string warp = m.value("warp", std::string());
@@ -32,6 +34,8 @@ double channelsOfSpec(const json& spec) {
     if (warp == name(w)) return double(momentChannels(w)) * m.value("layers", 1);
   return 0;
 }
+
+namespace {
 
 struct PassPoint {
   double mtexels, mchannels, ms;
@@ -105,7 +109,7 @@ CostSample sampleFromJson(const json& r, const std::string& label, size_t i) {
       s.passes.push_back(
           {p.at("name").get<std::string>(), p.at("kind").get<std::string>(), p.at("median_ms").get<double>()});
     if (r.contains("work")) s.work = rt::workFromJson(r["work"]);
-    if (r.contains("spec")) s.momentChannels = channelsOfSpec(r["spec"]);
+    if (r.contains("spec")) s.momentChannels = momentChannelsOfSpec(r["spec"]);
     return s;
   } catch (const json::exception& e) {
     throw std::runtime_error(fmt::format("{}: {}", at, e.what()));
@@ -118,7 +122,7 @@ CostSample sampleFromJson(const json& r, const std::string& label, size_t i) {
 
 CostSample costSample(const Row& row) {
   return {row.variant, row.caseLabel, row.scene,   row.device, row.screen,
-          row.map,     row.passes,    row.totalMs, row.work,   channelsOfSpec(row.spec)};
+          row.map,     row.passes,    row.totalMs, row.work,   momentChannelsOfSpec(row.spec)};
 }
 
 std::vector<CostSample> readCostSamples(const std::filesystem::path& file) {

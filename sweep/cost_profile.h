@@ -33,6 +33,8 @@ struct CostSample {
   double momentChannels = 0;
 };
 CostSample costSample(const Row& row);
+// A spec JSON's moment channels times its layers (CostSample::momentChannels); 0 without moments.
+double momentChannelsOfSpec(const nlohmann::json& spec);
 // The rows of a results.json (`rows[]`: variant, case, scene, screen, map, passes, total_ms and,
 // when counted, work); throws std::runtime_error naming the file and the field.
 std::vector<CostSample> readCostSamples(const std::filesystem::path& resultsJson);

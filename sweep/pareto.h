@@ -44,7 +44,8 @@ struct FrontierMark {
   Membership membership = Membership::Off;
   std::vector<size_t> tiedWith;
 };
-// One mark per row; an ineligible row is Off.
+// One mark per row; an ineligible row is Off, and so is a row without a prediction in a case
+// whose other rows a cost profile priced (two devices' times do not compare).
 std::vector<FrontierMark> frontierMarks(const std::vector<Row>& rows);
 
 // Case index -> indices into `rows` of that case's frontier (On or Tied), by increasing time

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <fstream>
 #include <glm/glm.hpp>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -299,6 +300,46 @@ TEST(PlanCli, WritesACheckedDescription) {
   const test::CliResult check = test::runShadowc("check '" + out.string() + "'");
   EXPECT_EQ(check.code, 0) << check.err;
   EXPECT_NE(test::readFile(out).find("filter two_planes {"), std::string::npos);
+}
+
+// With a cost profile the confirmations are timed by its prediction from their exact work counts
+// (docs/cost.md): two runs print the same predicted times and write the same plan whatever the
+// machine's load; the sibling, a profile that prices every fetch ten times higher, predicts more.
+TEST(PlanCli, CostProfileTimesByThePredictionAndRepeats) {
+  const auto dir = test::freshTempDir("plan_cost");
+  const std::string profile = (test::sourceDir() / "samples/cost/lavapipe.json").string();
+  auto plan = [&](const std::string& prof, const std::string& name) {
+    return test::runShadowc(
+        "plan --scene two_planes --max-rmse 0.05 --screen 64 --map 256 --samples 4 --runs 1 "
+        "--warmup 0 --cost-profile " +
+        prof + " -o " + (dir / name).string());
+  };
+  auto predictedLine = [](const std::string& out) {
+    const size_t at = out.find("worst scene's time");
+    return at == std::string::npos ? std::string() : out.substr(at, out.find('\n', at) - at);
+  };
+  const test::CliResult a = plan(profile, "a.shadow"), b = plan(profile, "b.shadow");
+  ASSERT_EQ(a.code, 0) << a.err;
+  ASSERT_EQ(b.code, 0) << b.err;
+  EXPECT_NE(a.out.find("predicted on lavapipe"), std::string::npos) << a.out;
+  EXPECT_EQ(predictedLine(a.out), predictedLine(b.out));
+  // The same plan: every line but the first (the command, which names its own -o) and the filter
+  // name (the file's stem).
+  auto body = [&](const std::string& name) {
+    std::string t = test::readFile(dir / name);
+    t = t.substr(t.find('\n') + 1);
+    const size_t f = t.find("filter ");
+    return t.substr(0, f) + t.substr(t.find(' ', f + 7));
+  };
+  EXPECT_EQ(body("a.shadow"), body("b.shadow"));
+  nlohmann::json costly = nlohmann::json::parse(test::readFile(profile));
+  for (auto& [field, c] : costly["shade"]["ms_per_mcount"].items()) c = c.get<double>() * 10 + 1;
+  const auto costlyPath = dir / "costly.json";
+  std::ofstream(costlyPath) << costly.dump();
+  const test::CliResult c = plan(costlyPath.string(), "c.shadow");
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_FALSE(predictedLine(c.out).empty());
+  EXPECT_NE(predictedLine(c.out), predictedLine(a.out)) << c.out;
 }
 
 TEST(PlanCli, UnreachableBoundNamesTheBestReachable) {

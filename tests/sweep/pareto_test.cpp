@@ -43,6 +43,10 @@ TEST(Pareto, APredictedFrameRanksInPlaceOfTheMeasuredOne) {
   EXPECT_EQ(names(rows, frontiers(rows).at(0)), (std::vector<std::string>{"cheap", "exact"}));
   EXPECT_EQ(frontierMarks(rows)[1].membership, Membership::Off);
   EXPECT_EQ(rankedMs(rows[1]), 4.0);
+  // A row the profile could not price is another device's time: left off, never compared.
+  rows.push_back(row("unpriced", 0.01, 0.001));
+  EXPECT_EQ(frontierMarks(rows)[3].membership, Membership::Off);
+  EXPECT_EQ(names(rows, frontiers(rows).at(0)), (std::vector<std::string>{"cheap", "exact"}));
 }
 
 TEST(Pareto, KnownFrontierByTime) {
