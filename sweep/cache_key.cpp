@@ -1,6 +1,7 @@
 #include "sweep/cache_key.h"
 
 #include "emit/content_hash.h"
+#include "plan/work_counters.h"
 #include "sweep/results_io.h"
 
 namespace shadowc::sweep {
@@ -21,7 +22,13 @@ std::string cacheKey(const KeyInputs& in) {
     j["runs"] = in.runs.runs;
   j["warmup"] = in.warmup;
   j["device"] = in.device;
-  if (in.counters) j["counters"] = true;  // rows without counts keep the key they always had
+  // Rows without counts keep the key they always had; counted rows name the counters, so a build
+  // that counts something new measures its rows again.
+  if (in.counters) {
+    nlohmann::ordered_json names = nlohmann::ordered_json::array();
+    for (const WorkCounter& c : workCounters()) names.push_back(c.name);
+    j["counters"] = std::move(names);
+  }
   const std::string h = contentHash({EmittedFile{"sweep-row", j.dump()}});
   return h.substr(h.find(':') + 1);
 }

@@ -12,6 +12,9 @@ const std::vector<WorkCounter>& workCounters() {
       {"receivers", "SHADOWC_WORK_RECEIVERS", "pixels with geometry the lookup ran for"},
       {"depth_fetches", "SHADOWC_WORK_DEPTH_FETCHES",
        "depth-map texels read: PCF and contact taps (4 a bilinear tap), blocker search taps, PCF fallback taps"},
+      {"depth_block_switches", "SHADOWC_WORK_DEPTH_BLOCK_SWITCHES",
+       "depth fetches in another 8x8 texel block than the fetch before (1 for the first): near taps share a "
+       "block, spread ones do not, as a texture cache sees them"},
       {"moment_fetches", "SHADOWC_WORK_MOMENT_FETCHES", "filtered reads of the moments image (no SAT)"},
       {"sat_fetches", "SHADOWC_WORK_SAT_FETCHES", "summed-area table corners read"},
       {"kernel_boxes", "SHADOWC_WORK_KERNEL_BOXES",

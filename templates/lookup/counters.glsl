@@ -14,14 +14,25 @@ layout(set = SHADOWC_SET, binding = SHADOWC_BINDING_WORK, std430) buffer shadowc
 };
 
 uint shadowc_work[SHADOWC_WORK_FIELDS];
+int shadowc_lastDepthBlock;  // the 8x8 texel block of the last depth fetch, -1 before the first
 
 #define SHADOWC_COUNT(k, n) shadowc_work[k] += uint(n);
 #define SHADOWC_WORK_BEGIN(receiver) shadowc_workBegin(receiver);
+#define SHADOWC_COUNT_DEPTH_BLOCK(texel) shadowc_countDepthBlock(texel);
+
+// A fetch in another block than the one before: a texture cache holds blocks of texels, so
+// taps close together cost one fill and spread taps one each (the footprint fetch counts miss).
+void shadowc_countDepthBlock(ivec2 t) {
+  int block = (t.y >> 3) * 65536 + (t.x >> 3);
+  if (block != shadowc_lastDepthBlock) shadowc_work[SHADOWC_WORK_DEPTH_BLOCK_SWITCHES] += 1u;
+  shadowc_lastDepthBlock = block;
+}
 #define SHADOWC_WORK_END shadowc_workEnd();
 
 void shadowc_workBegin(bool receiver) {
   for (int k = 0; k < SHADOWC_WORK_FIELDS; ++k) shadowc_work[k] = 0u;
   shadowc_work[SHADOWC_WORK_RECEIVERS] = receiver ? 1u : 0u;
+  shadowc_lastDepthBlock = -1;
 }
 
 void shadowc_workEnd() {

@@ -284,6 +284,7 @@
 #define SHADOWC_COUNT(k, n)
 #define SHADOWC_WORK_BEGIN(receiver)
 #define SHADOWC_WORK_END
+#define SHADOWC_COUNT_DEPTH_BLOCK(texel)
 #endif
 
 #endif

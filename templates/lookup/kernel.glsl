@@ -27,7 +27,7 @@ float shadowc_lightWidth() {
 #else
 ivec2 shadowc_mapSize() { return textureSize(shadowc_shadowDepth, 0); }
 
-float shadowc_depthAt(ivec2 t) { SHADOWC_COUNT(SHADOWC_WORK_DEPTH_FETCHES, 1)
+float shadowc_depthAt(ivec2 t) { SHADOWC_COUNT(SHADOWC_WORK_DEPTH_FETCHES, 1) SHADOWC_COUNT_DEPTH_BLOCK(clamp(t, ivec2(0), shadowc_mapSize() - 1))
   return texelFetch(shadowc_shadowDepth, clamp(t, ivec2(0), shadowc_mapSize() - 1), 0).r;
 }
 #endif

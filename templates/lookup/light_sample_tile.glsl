@@ -11,7 +11,7 @@ ivec2 shadowc_mapSize() { return textureSize(shadowc_shadowDepth, 0) / SHADOWC_L
 
 float shadowc_depthAt(ivec2 t) { SHADOWC_COUNT(SHADOWC_WORK_DEPTH_FETCHES, 1)
   ivec2 side = shadowc_mapSize();
-  ivec2 origin = ivec2(shadowc_lightSample % SHADOWC_LIGHT_SAMPLE_GRID, shadowc_lightSample / SHADOWC_LIGHT_SAMPLE_GRID) * side;
+  ivec2 origin = ivec2(shadowc_lightSample % SHADOWC_LIGHT_SAMPLE_GRID, shadowc_lightSample / SHADOWC_LIGHT_SAMPLE_GRID) * side; SHADOWC_COUNT_DEPTH_BLOCK(origin + clamp(t, ivec2(0), side - 1))
   return texelFetch(shadowc_shadowDepth, origin + clamp(t, ivec2(0), side - 1), 0).r;
 }
 

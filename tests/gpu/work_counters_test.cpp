@@ -67,6 +67,25 @@ TEST_F(WorkCountersTest, PcfGridAndPoissonReadTheirTapsAtEveryScreenSize) {
   }
 }
 
+// The footprint counter: one tap a receiver is one block switch a receiver (the first fetch
+// always switches); a 5 x 5 grid inside 8 x 8 blocks, read row by row, switches at most twice a
+// row (a 5-texel row spans at most two blocks, and the next row may start in the other one), so
+// between 1 and 10 a receiver, and fewer than its 25 fetches.
+TEST_F(WorkCountersTest, DepthBlockSwitchesFollowTheFootprint) {
+  const std::string oneTap = "filter one_tap {\n    depth\n    kernel fixed(1)\n    sampling grid(1x1)\n}\n";
+  const auto one = sceneWork(context(), "one_tap", oneTap, 64);
+  EXPECT_TRUE(countsExactly(one, "depth_fetches", 1));
+  EXPECT_TRUE(countsExactly(one, "depth_block_switches", 1));
+  const auto grid = sceneWork(context(), "pcf_grid5x5", sampleSource("pcf_grid5x5"), 64);
+  ASSERT_TRUE(grid && grid->receivers() > 0);
+  const uint64_t switches = *grid->total("depth_block_switches");
+  EXPECT_GE(switches, grid->receivers());
+  EXPECT_LE(switches, 10 * grid->receivers());
+  EXPECT_LT(switches, *grid->total("depth_fetches"));
+  // The sibling: a one-tap closed form is not met by the grid.
+  EXPECT_FALSE(countsExactly(grid, "depth_block_switches", 1));
+}
+
 TEST_F(WorkCountersTest, SiblingsAClosedFormOneTapOffAndNoReceiversFail) {
   const auto grid = sceneWork(context(), "pcf_grid5x5", sampleSource("pcf_grid5x5"), 64);
   EXPECT_FALSE(countsExactly(grid, "depth_fetches", 24));
