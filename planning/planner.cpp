@@ -140,14 +140,15 @@ Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const P
     if (it != cache->end()) return it->second;
   }
   const std::string text = describeCandidate(c, d);
-  const driver::Result r = driver::compileSpec(candidateSpec(c, d));
+  const FilterSpec spec = candidateSpec(c, d);
+  const driver::Result r = driver::compileSpec(spec);
   if (!r.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile:\n" + r.log + text);
   const CompiledPasses passes = r.artifact->passes();
   std::optional<CompiledPasses> counted;  // the instrumented build, for the profile's counts
   if (profile) {
     driver::Options counting;
     counting.counters = true;
-    const driver::Result rc = driver::compileSpec(candidateSpec(c, d), counting);
+    const driver::Result rc = driver::compileSpec(spec, counting);
     if (!rc.artifact) throw std::logic_error("planner candidate '" + c.name + "' did not compile counted:\n" + rc.log);
     counted = rc.artifact->passes();
   }
@@ -174,8 +175,10 @@ Measurement measureCandidate(rt::VulkanContext& ctx, const Candidate& c, const P
       s.momentChannels = sweep::momentChannelsOfSpec(passes.manifest.spec);
       const std::optional<double> predicted = profile->frameMs(s);
       if (!predicted)
-        throw PlanError(fmt::format("the cost profile for {} cannot price {}: a pass it was not fitted on ({})",
-                                    profile->device, c.name, "docs/cost.md"));
+        throw PlanError(
+            fmt::format("the cost profile for {} cannot price {}: it has a pass the profile was not "
+                        "fitted on (docs/cost.md)",
+                        profile->device, c.name));
       m.measuredMs.push_back(t.totalMs);
       ms = low = high = *predicted;
     }

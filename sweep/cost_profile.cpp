@@ -23,6 +23,14 @@ constexpr const char* kShadeKind = "shade";
 
 double mtexels(uint32_t side) { return double(side) * side * 1e-6; }
 
+std::string readText(const std::filesystem::path& file, const std::string& what) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": error: cannot read the " + what);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
 }  // namespace
 
 // The warp's stored channels (image_formats.h) times the layers.
@@ -126,13 +134,9 @@ CostSample costSample(const Row& row) {
 }
 
 std::vector<CostSample> readCostSamples(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": error: cannot read the sweep results");
-  std::stringstream ss;
-  ss << in.rdbuf();
   json j;
   try {
-    j = json::parse(ss.str());
+    j = json::parse(readText(file, "sweep results"));
   } catch (const json::exception& e) {
     throw std::runtime_error(file.string() + ": error: malformed JSON: " + e.what());
   }
@@ -171,11 +175,15 @@ std::optional<double> CostProfile::passMs(const PassTime& pass, const CostSample
     }
     return ms;
   }
-  auto it = passes.find(pass.name);
-  if (it == passes.end()) it = kinds.find(pass.kind);
-  if (it == kinds.end()) return std::nullopt;
+  // By the pass's name, else by its kind (a pass of a name the calibration did not run).
+  const PassCost* cost = nullptr;
+  if (const auto byName = passes.find(pass.name); byName != passes.end())
+    cost = &byName->second;
+  else if (const auto byKind = kinds.find(pass.kind); byKind != kinds.end())
+    cost = &byKind->second;
+  if (!cost) return std::nullopt;
   const double mt = mtexels(sample.map);
-  return it->second.fixedMs + it->second.msPerMtexel * mt + it->second.msPerMchannel * mt * sample.momentChannels;
+  return cost->fixedMs + cost->msPerMtexel * mt + cost->msPerMchannel * mt * sample.momentChannels;
 }
 
 std::optional<double> CostProfile::frameMs(const CostSample& sample) const {
@@ -326,11 +334,7 @@ CostProfile parseCostProfile(const std::string& text, const std::string& label) 
 }
 
 CostProfile loadCostProfile(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  if (!in) throw std::runtime_error(file.string() + ": error: cannot read the cost profile");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return parseCostProfile(ss.str(), file.string());
+  return parseCostProfile(readText(file, "cost profile"), file.string());
 }
 
 }  // namespace shadowc::sweep

@@ -26,6 +26,7 @@ std::string topPasses(const Row& r) {
 std::string formatFrontierTables(const Results& res, bool allRows) {
   const auto front = frontiers(res.rows);
   const std::vector<FrontierMark> marks = frontierMarks(res.rows);
+  const std::set<size_t> predictedCase = predictedCases(res.rows);
   bool anyTie = false;
   const std::string interval = intervalLabel(res.rows);  // the coverage the runs give (timing_stats.h)
   std::map<size_t, std::vector<size_t>> byCase;
@@ -42,8 +43,7 @@ std::string formatFrontierTables(const Results& res, bool allRows) {
     size_t width = 7;
     for (size_t i : shown) width = std::max(width, res.rows[i].variant.size());
     const Row& first = res.rows[members.front()];
-    const bool predicted =
-        std::any_of(members.begin(), members.end(), [&](size_t i) { return res.rows[i].predictedMs.has_value(); });
+    const bool predicted = predictedCase.count(c) > 0;
     out += fmt::format(
         "{} {}: {} of {} rows on the frontier (time = {}, RMSE vs the Embree reference)\n",
         allRows ? "trade-off" : "frontier", first.caseLabel, frontier.size(), members.size(),

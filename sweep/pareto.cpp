@@ -1,11 +1,16 @@
 #include "sweep/pareto.h"
 
 #include <algorithm>
-#include <set>
 
 namespace shadowc::sweep {
 
 double rankedMs(const Row& row) { return row.predictedMs ? *row.predictedMs : row.totalMs; }
+std::set<size_t> predictedCases(const std::vector<Row>& rows) {
+  std::set<size_t> cases;
+  for (const Row& r : rows)
+    if (r.predictedMs) cases.insert(r.caseIndex);
+  return cases;
+}
 double timeLowMs(const Row& row) {
   return row.predictedMs ? *row.predictedMs : row.total.n > 0 ? row.total.ciLowMs : row.totalMs;
 }
@@ -35,13 +40,9 @@ std::string intervalLabel(const std::vector<Row>& rows) {
 
 std::vector<FrontierMark> frontierMarks(const std::vector<Row>& rows) {
   std::map<size_t, std::vector<size_t>> byCase;
-  std::set<size_t> predictedCases;  // cases ranked by a cost profile's predictions
-  for (const Row& r : rows)
-    if (r.predictedMs) predictedCases.insert(r.caseIndex);
-  // A predicted time and a measured one are of two devices: where a case has predictions, a row
-  // the profile could not price is not ranked at all.
+  const std::set<size_t> predicted = predictedCases(rows);
   for (size_t i = 0; i < rows.size(); ++i)
-    if (eligible(rows[i]) && (rows[i].predictedMs || !predictedCases.count(rows[i].caseIndex)))
+    if (eligible(rows[i]) && (rows[i].predictedMs || !predicted.count(rows[i].caseIndex)))
       byCase[rows[i].caseIndex].push_back(i);
   std::vector<FrontierMark> marks(rows.size());
   // Quadratic, and fine: a case has at most a few thousand rows.

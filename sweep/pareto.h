@@ -10,6 +10,7 @@
 
 #include <cstddef>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,9 @@ namespace shadowc::sweep {
 // measured median. A prediction is a point (it does not move with load); a measurement is known
 // to the interval [ci low, ci high], or [total, total] without one.
 double rankedMs(const Row& row);
+// The cases some row of which a cost profile priced: their rows are ranked, drawn and tabled by
+// the prediction, and a row without one is left off (two devices' times do not compare).
+std::set<size_t> predictedCases(const std::vector<Row>& rows);
 double timeLowMs(const Row& row);
 double timeHighMs(const Row& row);
 

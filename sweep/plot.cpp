@@ -6,6 +6,7 @@
 #include <sys/wait.h>
 
 #include <algorithm>
+#include <set>
 #include <vector>
 
 #include "runtime/images/atomic_file.h"
@@ -55,6 +56,7 @@ PlotFiles writePlots(const std::filesystem::path& dir, const Results& res) {
   const std::filesystem::path plots = std::filesystem::absolute(dir / "plots");
   const auto front = frontiers(res.rows);
   const std::vector<FrontierMark> marks = frontierMarks(res.rows);
+  const std::set<size_t> predictedCase = predictedCases(res.rows);
   std::map<size_t, std::vector<size_t>> byCase;
   for (size_t i = 0; i < res.rows.size(); ++i) byCase[res.rows[i].caseIndex].push_back(i);
   for (const auto& [c, members] : byCase) {
@@ -64,8 +66,7 @@ PlotFiles writePlots(const std::filesystem::path& dir, const Results& res) {
     double lo = 1e300, hi = 0, top = 0, low = 1e300;
     // Ranked by a cost profile, the axis is the predicted frame; a row it could not price has no
     // place on that axis (two devices' times).
-    const bool predicted =
-        std::any_of(members.begin(), members.end(), [&](size_t i) { return res.rows[i].predictedMs.has_value(); });
+    const bool predicted = predictedCase.count(c) > 0;
     for (size_t i : members) {
       const Row& r = res.rows[i];
       if (!eligible(r) || (predicted && !r.predictedMs)) continue;
