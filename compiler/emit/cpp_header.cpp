@@ -18,11 +18,11 @@ namespace shadowc {
 namespace {
 
 // C++ enumerator names of the generated types, indexed by the manifest enums' values.
-constexpr std::array<const char*, 12> kFormatNames{"R32F",        "RG32F",   "RGBA32F",  "R16F",
-                                                   "RG16F",       "RGBA16F", "R16Unorm", "RG16Unorm",
-                                                   "RGBA16Unorm", "R32UI",   "RG32UI",   "RGBA32UI"};
-constexpr std::array<const char*, 5> kRoleNames{"Internal", "InputDepth", "InputPosition", "InputNormal",
-                                                "OutputVisibility"};
+constexpr std::array<const char*, 14> kFormatNames{"R32F",    "RG32F",    "RGBA32F",   "R16F",        "RG16F",
+                                                   "RGBA16F", "R16Unorm", "RG16Unorm", "RGBA16Unorm", "R32UI",
+                                                   "RG32UI",  "RGBA32UI", "D32F",      "D24"};
+constexpr std::array<const char*, 6> kRoleNames{"Internal",    "InputDepth",       "InputPosition",
+                                                "InputNormal", "OutputVisibility", "InputHardwareDepth"};
 constexpr std::array<const char*, 6> kAccessNames{"Sampled",          "StorageRead", "StorageWrite",
                                                   "StorageReadWrite", "Uniform",     "StorageBufferRead"};
 constexpr std::array<const char*, 3> kModeNames{"Texels", "Rows", "Columns"};
@@ -37,12 +37,14 @@ const char* nameOf(const std::array<const char*, N>& table, E e) {
 }
 
 // The shared declarations; bump the guard's number with any change to them.
-constexpr const char* kTypes = R"(#ifndef SHADOWC_GENERATED_TYPES_V2
-#define SHADOWC_GENERATED_TYPES_V2
+constexpr const char* kTypes = R"(#ifndef SHADOWC_GENERATED_TYPES_V3
+#define SHADOWC_GENERATED_TYPES_V3
 namespace shadowc_filters {
 enum class Format : std::uint32_t { R32F, RG32F, RGBA32F, R16F, RG16F, RGBA16F, R16Unorm, RG16Unorm, RGBA16Unorm,
-                                    R32UI, RG32UI, RGBA32UI };
-enum class Role : std::uint32_t { Internal, InputDepth, InputPosition, InputNormal, OutputVisibility };
+                                    R32UI, RG32UI, RGBA32UI,
+                                    D32F, D24 };  // depth: the engine's depth attachment (depth_input)
+enum class Role : std::uint32_t { Internal, InputDepth, InputPosition, InputNormal, OutputVisibility,
+                                  InputHardwareDepth };
 enum class Access : std::uint32_t { Sampled, StorageRead, StorageWrite, StorageReadWrite, Uniform,
                                     StorageBufferRead };
 enum class Domain : std::uint32_t { Map, Screen };      // extent = max(1, domain extent >> shift)

@@ -24,7 +24,7 @@ E parseEnum(const nlohmann::json& j, const char* field, const std::array<std::pa
   throw ManifestError(std::string("manifest: unknown value '") + v + "' for field '" + field + "'");
 }
 
-constexpr std::array<std::pair<ImageFormat, const char*>, 12> kFormats{{{ImageFormat::R32F, "r32f"},
+constexpr std::array<std::pair<ImageFormat, const char*>, 14> kFormats{{{ImageFormat::R32F, "r32f"},
                                                                         {ImageFormat::RG32F, "rg32f"},
                                                                         {ImageFormat::RGBA32F, "rgba32f"},
                                                                         {ImageFormat::R16F, "r16f"},
@@ -35,12 +35,16 @@ constexpr std::array<std::pair<ImageFormat, const char*>, 12> kFormats{{{ImageFo
                                                                         {ImageFormat::RGBA16Unorm, "rgba16"},
                                                                         {ImageFormat::R32UI, "r32ui"},
                                                                         {ImageFormat::RG32UI, "rg32ui"},
-                                                                        {ImageFormat::RGBA32UI, "rgba32ui"}}};
-constexpr std::array<std::pair<ImageRole, const char*>, 5> kRoles{{{ImageRole::Internal, "internal"},
-                                                                   {ImageRole::InputDepth, "input_depth"},
-                                                                   {ImageRole::InputPosition, "input_position"},
-                                                                   {ImageRole::InputNormal, "input_normal"},
-                                                                   {ImageRole::OutputVisibility, "output_visibility"}}};
+                                                                        {ImageFormat::RGBA32UI, "rgba32ui"},
+                                                                        {ImageFormat::D32F, "d32f"},
+                                                                        {ImageFormat::D24, "d24"}}};
+constexpr std::array<std::pair<ImageRole, const char*>, 6> kRoles{
+    {{ImageRole::Internal, "internal"},
+     {ImageRole::InputDepth, "input_depth"},
+     {ImageRole::InputPosition, "input_position"},
+     {ImageRole::InputNormal, "input_normal"},
+     {ImageRole::OutputVisibility, "output_visibility"},
+     {ImageRole::InputHardwareDepth, "input_hardware_depth"}}};
 constexpr std::array<std::pair<Access, const char*>, 7> kAccess{
     {{Access::Sampled, "sampled"},
      {Access::StorageRead, "storage_read"},
@@ -328,6 +332,8 @@ uint32_t bytesPerTexel(ImageFormat f) {
   switch (f) {
     case ImageFormat::R32F:
     case ImageFormat::R32UI:
+    case ImageFormat::D32F:
+    case ImageFormat::D24:  // X8_D24: one 32-bit word, depth in the low 24 bits
       return 4;
     case ImageFormat::RG32F:
     case ImageFormat::RG32UI:

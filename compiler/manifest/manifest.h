@@ -27,17 +27,26 @@ enum class ImageFormat {
   RGBA16Unorm,
   R32UI,
   RG32UI,
-  RGBA32UI
+  RGBA32UI,
+  // Depth formats: only an engine's depth attachment, the input of a hardware-depth filter
+  // (docs/manifest.md "Hardware depth"); sampled through a depth-aspect view, never stored.
+  D32F,  // VK_FORMAT_D32_SFLOAT
+  D24    // VK_FORMAT_X8_D24_UNORM_PACK32 (or the depth aspect of D24_UNORM_S8_UINT)
 };
+// Whether a format is a depth format (its views and copies use the depth aspect).
+inline bool isDepthFormat(ImageFormat f) { return f == ImageFormat::D32F || f == ImageFormat::D24; }
 
 // What the runtime must put into (or take out of) an image. Internal images are the
 // filter's own business; the others are the fixed interface between harness and filter.
 enum class ImageRole {
   Internal,
-  InputDepth,       // light-space normalized linear depth, R32F, size "map" (see frame.glsl)
-  InputPosition,    // camera G-buffer world position, RGBA32F, w = 1 where geometry
-  InputNormal,      // camera G-buffer world normal, RGBA32F
-  OutputVisibility  // R32F in [0,1], size "screen"
+  InputDepth,        // light-space normalized linear depth, R32F, size "map" (see frame.glsl)
+  InputPosition,     // camera G-buffer world position, RGBA32F, w = 1 where geometry
+  InputNormal,       // camera G-buffer world normal, RGBA32F
+  OutputVisibility,  // R32F in [0,1], size "screen"
+  // The engine's light depth attachment as rendered (D32F or D24, standard or reverse Z, the
+  // spec's `depth_input`), size "map"; the first pass converts it into the internal shadow_depth.
+  InputHardwareDepth
 };
 
 enum class SizeDomain { Map, Screen };

@@ -31,7 +31,10 @@ class Planner {
     addImage({"gbuffer_position", ImageFormat::RGBA32F, kScreen, 1, 1, ImageRole::InputPosition, false});
     addImage({"gbuffer_normal", ImageFormat::RGBA32F, kScreen, 1, 1, ImageRole::InputNormal, false});
     addImage({"visibility", ImageFormat::R32F, kScreen, 1, 1, ImageRole::OutputVisibility, false});
-    addImage({"shadow_depth", ImageFormat::R32F, kMap, 1, 1, ImageRole::InputDepth, false});
+    const bool hardwareDepth = spec_.depthInput.format != DepthInputFormat::Linear;
+    addImage({"shadow_depth", ImageFormat::R32F, kMap, 1, 1,
+              hardwareDepth ? ImageRole::Internal : ImageRole::InputDepth, false});
+    if (hardwareDepth) planDepthConvert();
     const bool moments = spec_.representation == Representation::Moments;
     if (moments) planMoments();
     if (spec_.earlyOutMinMax) planMinMax();
@@ -54,6 +57,21 @@ class Planner {
     graph_.manifest.passes.push_back(std::move(p));
     graph_.sources.push_back(std::move(source));
     return graph_.manifest.passes.back();
+  }
+
+  // `depth_input d32|d24`: the engine's depth attachment in, the linear shadow_depth every later
+  // pass samples out (passes/depth_convert.comp); the projection is the light's.
+  void planDepthConvert() {
+    const ImageFormat format = spec_.depthInput.format == DepthInputFormat::D32 ? ImageFormat::D32F : ImageFormat::D24;
+    addImage({"hardware_depth", format, kMap, 1, 1, ImageRole::InputHardwareDepth, false});
+    Specialization v;
+    v.add("SHADOWC_DEPTH_REVERSED", spec_.depthInput.reversed);
+    v.add("SHADOWC_DEPTH_ORTHO", spec_.light.type == LightType::Sun);
+    Pass& p = addPass("depth_convert", "depth_convert", {8, 8, 1}, {kMap, DispatchMode::Texels},
+                      {"passes/depth_convert.comp", "depth_convert", std::move(v)});
+    p.bindings = {{0, "frame", Access::Uniform, -1},
+                  {1, "hardware_depth", Access::Sampled, -1},
+                  {2, "shadow_depth", Access::StorageWrite, 0}};
   }
 
   Specialization momentsValues() const {

@@ -8,6 +8,17 @@
 #include "spec/load_filter.h"
 
 namespace shadowc {
+const char* name(DepthInputFormat v) {
+  switch (v) {
+    case DepthInputFormat::Linear:
+      return "linear";
+    case DepthInputFormat::D32:
+      return "d32";
+    case DepthInputFormat::D24:
+      return "d24";
+  }
+  return "?";
+}
 const char* name(Warp v) {
   switch (v) {
     case Warp::Linear:
@@ -256,6 +267,9 @@ nlohmann::ordered_json specToJson(const FilterSpec& s) {
                       {"lambda", s.cascades.lambda},
                       {"blend", s.cascades.blend},
                       {"grid", cascadeGrid(s.cascades.count)}};
+  // Written only for a hardware depth input, so every other manifest stays byte-identical.
+  if (s.depthInput.format != DepthInputFormat::Linear)
+    j["depth_input"] = J{{"format", name(s.depthInput.format)}, {"z", s.depthInput.reversed ? "reverse" : "standard"}};
   // Written only with light samples, so every other manifest stays byte-identical. The offsets
   // are the views an engine renders (docs/integration.md "Light samples").
   if (s.lightSamples > 0) {

@@ -210,6 +210,19 @@ struct ContactSpec {
   double epsilon = 0.01;
 };
 
+// What the engine's light-depth pass leaves for the filter (docs/dsl.md "depth_input"): `linear`
+// is the r32f normalized linear depth (z - near) / (far - near) every lookup reads
+// (templates/frame.glsl); a hardware format is the depth attachment itself, which the manifest's
+// first pass (passes/depth_convert.comp) turns into that linear depth. The projection follows the
+// light: perspective for a spot and each face of a point light, orthographic for a sun.
+enum class DepthInputFormat { Linear, D32, D24 };
+struct DepthInputSpec {
+  DepthInputFormat format = DepthInputFormat::Linear;
+  bool reversed = false;  // reverse-Z: near at 1, far at 0 (compare GREATER, clear 0)
+  friend bool operator==(const DepthInputSpec&, const DepthInputSpec&) = default;
+};
+const char* name(DepthInputFormat v);
+
 struct FilterSpec {
   std::string name;
   SourceLocation location;  // of the `filter` keyword
@@ -234,6 +247,7 @@ struct FilterSpec {
   // light; `uniform` counts the visible fraction of the light (docs/dsl.md "weights").
   bool formFactorWeights = false;
   CascadeSpec cascades;  // a sun only (checker, light_rules.cpp)
+  DepthInputSpec depthInput;
   int lightSamples = 0;  // a spot's depth filters only (checker, light_rules.cpp)
   // Largest shadow-map side (texels) the precision checks assume: SAT sums of W^2 texels
   // lower the EVSM exponent limit by ln(W^2)/2 (docs/dsl.md "Exponent limits"). The runtime must not

@@ -209,6 +209,9 @@ std::string printFilter(const FilterSpec& s) {
                                      : "none");
   lines.emplace_back("backface", s.backfaceShadowed ? "shadowed" : "filtered");
   if (s.formFactorWeights) lines.emplace_back("weights", "form_factor");  // absent = uniform, as before
+  if (s.depthInput.format != DepthInputFormat::Linear)                    // absent = linear, as before
+    lines.emplace_back("depth_input", s.depthInput.reversed ? call(name(s.depthInput.format), {"z: reverse"})
+                                                            : std::string(name(s.depthInput.format)));
   lines.emplace_back("map_size", std::to_string(s.mapSize));
   if (s.resolution > 0) lines.emplace_back("resolution", std::to_string(s.resolution));
   if (s.cascades.count > 0) {

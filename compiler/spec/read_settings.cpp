@@ -20,9 +20,9 @@ using dsl::DiagId;
 using dsl::Setting;
 using dsl::Value;
 
-const Names kSettings = {"light",    "depth",    "moments",  "storage",    "blur",     "mips",         "blocker",
-                         "kernel",   "sampling", "bias",     "fallback",   "contact",  "early_out",    "backface",
-                         "bleeding", "weights",  "map_size", "resolution", "cascades", "light_samples"};
+const Names kSettings = {"light",    "depth",    "moments",  "storage",    "blur",     "mips",          "blocker",
+                         "kernel",   "sampling", "bias",     "fallback",   "contact",  "early_out",     "backface",
+                         "bleeding", "weights",  "map_size", "resolution", "cascades", "light_samples", "depth_input"};
 
 class SettingsReader : ValueReader {
  public:
@@ -107,6 +107,8 @@ class SettingsReader : ValueReader {
       readCascades(s);
     else if (s.keyword == "light_samples")
       readLightSamples(s);
+    else if (s.keyword == "depth_input")
+      readDepthInput(v, what);
     else if (s.keyword == "map_size") {
       out_.mapSize = &s;
       if (auto n = integer(&v, what, 16, 16384)) out_.spec.mapSize = *n;
@@ -169,6 +171,27 @@ class SettingsReader : ValueReader {
       l.sizeFromScene = s->fromScene, l.size = s->value;
       out_.lightSizeGiven = !s->fromScene;
     }
+  }
+
+  // `depth_input linear | d32 | d24 | d32(z: reverse) | d24(z: standard)` (docs/dsl.md
+  // "depth_input"): the engine's depth attachment as the filter's input.
+  void readDepthInput(const Value& v, const std::string& what) {
+    auto idx = variant(v, what, {"linear", "d32", "d24"});
+    if (!idx) return;
+    Bound b;
+    if (*idx == 0) {
+      if (bind(v, {}, b)) out_.spec.depthInput = DepthInputSpec{};
+      return;
+    }
+    DepthInputSpec d;
+    d.format = *idx == 1 ? DepthInputFormat::D32 : DepthInputFormat::D24;
+    if (!bind(v, {{"z", false}}, b)) return;
+    if (const Value* z = get(b, "z")) {
+      auto c = choice(z, arg("z", v), {"standard", "reverse"});
+      if (!c) return;
+      d.reversed = *c == 1;
+    }
+    out_.spec.depthInput = d;
   }
 
   // `cascades N` (practical split, lambda 0.5, blend 0.1) or `cascades SCHEME(count: N, ...)` with

@@ -15,10 +15,21 @@ namespace {
 enum class Scalar { F32, F16, Unorm16, U32 };
 Scalar scalarOf(ImageFormat f) {
   switch (f) {
-    case ImageFormat::R32F: case ImageFormat::RG32F: case ImageFormat::RGBA32F: return Scalar::F32;
-    case ImageFormat::R16F: case ImageFormat::RG16F: case ImageFormat::RGBA16F: return Scalar::F16;
-    case ImageFormat::R16Unorm: case ImageFormat::RG16Unorm: case ImageFormat::RGBA16Unorm: return Scalar::Unorm16;
-    default: return Scalar::U32;
+    case ImageFormat::R32F:
+    case ImageFormat::RG32F:
+    case ImageFormat::RGBA32F:
+    case ImageFormat::D32F:
+      return Scalar::F32;
+    case ImageFormat::R16F:
+    case ImageFormat::RG16F:
+    case ImageFormat::RGBA16F:
+      return Scalar::F16;
+    case ImageFormat::R16Unorm:
+    case ImageFormat::RG16Unorm:
+    case ImageFormat::RGBA16Unorm:
+      return Scalar::Unorm16;
+    default:
+      return Scalar::U32;
   }
 }
 
@@ -55,8 +66,8 @@ uint16_t floatToHalf(float f) {
   const uint16_t sign = uint16_t((bits >> 16) & 0x8000);
   const float a = std::fabs(f);
   if (std::isnan(f)) return sign | 0x7e00;
-  if (a >= 65520.0f) return sign | 0x7c00;  // rounds to infinity
-  if (a < std::ldexp(1.0f, -14)) {          // subnormal half (or zero): multiples of 2^-24
+  if (a >= 65520.0f) return sign | 0x7c00;                     // rounds to infinity
+  if (a < std::ldexp(1.0f, -14)) {                             // subnormal half (or zero): multiples of 2^-24
     const float m = std::nearbyint(a * std::ldexp(1.0f, 24));  // default rounding: to nearest even
     return sign | uint16_t(m);
   }
@@ -77,7 +88,8 @@ uint32_t HostImage::channels() const { return channelCount(format); }
 size_t HostImage::texelOffset(uint32_t x, uint32_t y, uint32_t layer) const {
   if (x >= width || y >= height || layer >= layers)
     throw std::out_of_range("HostImage: texel (" + std::to_string(x) + ", " + std::to_string(y) + ", layer " +
-                            std::to_string(layer) + ") outside " + std::to_string(width) + "x" + std::to_string(height));
+                            std::to_string(layer) + ") outside " + std::to_string(width) + "x" +
+                            std::to_string(height));
   return ((size_t(layer) * height + y) * width + x) * bytesPerTexel(format);
 }
 
@@ -91,9 +103,11 @@ HostImage HostImage::zeros(uint32_t w, uint32_t h, ImageFormat f, uint32_t layer
   return im;
 }
 
-HostImage HostImage::fromFloats(uint32_t w, uint32_t h, ImageFormat f, const std::vector<float>& values, uint32_t layers) {
+HostImage HostImage::fromFloats(uint32_t w, uint32_t h, ImageFormat f, const std::vector<float>& values,
+                                uint32_t layers) {
   checkCount(values.size(), w, h, layers, f);
-  if (scalarOf(f) == Scalar::U32) throw std::invalid_argument(std::string("HostImage::fromFloats: ") + toString(f) + " is an integer format");
+  if (scalarOf(f) == Scalar::U32)
+    throw std::invalid_argument(std::string("HostImage::fromFloats: ") + toString(f) + " is an integer format");
   HostImage im = zeros(w, h, f, layers);
   for (size_t i = 0; i < values.size(); ++i) {
     switch (scalarOf(f)) {
@@ -117,16 +131,19 @@ HostImage HostImage::fromFloats(uint32_t w, uint32_t h, ImageFormat f, const std
   return im;
 }
 
-HostImage HostImage::fromUints(uint32_t w, uint32_t h, ImageFormat f, const std::vector<uint32_t>& values, uint32_t layers) {
+HostImage HostImage::fromUints(uint32_t w, uint32_t h, ImageFormat f, const std::vector<uint32_t>& values,
+                               uint32_t layers) {
   checkCount(values.size(), w, h, layers, f);
-  if (scalarOf(f) != Scalar::U32) throw std::invalid_argument(std::string("HostImage::fromUints: ") + toString(f) + " is not an integer format");
+  if (scalarOf(f) != Scalar::U32)
+    throw std::invalid_argument(std::string("HostImage::fromUints: ") + toString(f) + " is not an integer format");
   HostImage im = zeros(w, h, f, layers);
   std::memcpy(im.bytes.data(), values.data(), values.size() * 4);
   return im;
 }
 
 float HostImage::texel(uint32_t x, uint32_t y, uint32_t c, uint32_t layer) const {
-  if (c >= channels()) throw std::out_of_range("HostImage: channel " + std::to_string(c) + " of a " + toString(format) + " image");
+  if (c >= channels())
+    throw std::out_of_range("HostImage: channel " + std::to_string(c) + " of a " + toString(format) + " image");
   const uint8_t* p = bytes.data() + texelOffset(x, y, layer);
   switch (scalarOf(format)) {
     case Scalar::F32: {
@@ -151,8 +168,10 @@ float HostImage::texel(uint32_t x, uint32_t y, uint32_t c, uint32_t layer) const
 }
 
 uint32_t HostImage::texelUint(uint32_t x, uint32_t y, uint32_t c, uint32_t layer) const {
-  if (scalarOf(format) != Scalar::U32) throw std::invalid_argument(std::string("HostImage::texelUint on ") + toString(format));
-  if (c >= channels()) throw std::out_of_range("HostImage: channel " + std::to_string(c) + " of a " + toString(format) + " image");
+  if (scalarOf(format) != Scalar::U32)
+    throw std::invalid_argument(std::string("HostImage::texelUint on ") + toString(format));
+  if (c >= channels())
+    throw std::out_of_range("HostImage: channel " + std::to_string(c) + " of a " + toString(format) + " image");
   uint32_t v;
   std::memcpy(&v, bytes.data() + texelOffset(x, y, layer) + 4 * c, 4);
   return v;

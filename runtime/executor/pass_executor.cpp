@@ -134,7 +134,7 @@ struct PassExecutor::Impl {
     auto& v = im.views[{allLevels, level, arrayed}];
     if (!v.get())
       v = createView(ctx, im.image, arrayed ? VK_IMAGE_VIEW_TYPE_2D_ARRAY : VK_IMAGE_VIEW_TYPE_2D,
-                     VK_IMAGE_ASPECT_COLOR_BIT, allLevels ? 0 : uint32_t(level), allLevels ? im.image.levels : 1);
+                     aspectOf(im.desc.format), allLevels ? 0 : uint32_t(level), allLevels ? im.image.levels : 1);
     return v.get();
   }
 
@@ -210,15 +210,19 @@ struct PassExecutor::Impl {
         b.newLayout = VK_IMAGE_LAYOUT_GENERAL;
         b.srcQueueFamilyIndex = b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
         b.image = im.image.image;
-        b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, im.image.levels, 0, im.image.layers};
+        b.subresourceRange = {aspectOf(im.desc.format), 0, im.image.levels, 0, im.image.layers};
         barriers.push_back(b);
       }
       vkCmdPipelineBarrier(c, VK_PIPELINE_STAGE_TOP_OF_PIPE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT, 0, 0, nullptr, 0,
                            nullptr, uint32_t(barriers.size()), barriers.data());
       const VkClearColorValue zero{};
+      const VkClearDepthStencilValue zeroDepth{};
       for (auto& im : images) {
-        const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, im.image.levels, 0, im.image.layers};
-        vkCmdClearColorImage(c, im.image.image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
+        const VkImageSubresourceRange range{aspectOf(im.desc.format), 0, im.image.levels, 0, im.image.layers};
+        if (isDepthFormat(im.desc.format))
+          vkCmdClearDepthStencilImage(c, im.image.image, VK_IMAGE_LAYOUT_GENERAL, &zeroDepth, 1, &range);
+        else
+          vkCmdClearColorImage(c, im.image.image, VK_IMAGE_LAYOUT_GENERAL, &zero, 1, &range);
       }
     });
   }
@@ -573,12 +577,12 @@ void PassExecutor::upload(const std::string& name, const HostImage& data) {
   impl_->ctx.submitAndWait([&](VkCommandBuffer c) {
     // Copies go through the TRANSFER_*_OPTIMAL layouts (core validation warns on GENERAL);
     // passes always see GENERAL.
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, im.image.layers};
+    const VkImageSubresourceRange range{aspectOf(im.desc.format), 0, 1, 0, im.image.layers};
     imageBarrier(c, im.image.image, range, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
                  VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT | VK_ACCESS_MEMORY_READ_BIT,
                  VK_PIPELINE_STAGE_TRANSFER_BIT, VK_ACCESS_TRANSFER_WRITE_BIT);
     VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, im.image.layers};
+    copy.imageSubresource = {aspectOf(im.desc.format), 0, 0, im.image.layers};
     copy.imageExtent = {im.image.width, im.image.height, 1};
     vkCmdCopyBufferToImage(c, staging.buffer, im.image.image, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &copy);
     imageBarrier(c, im.image.image, range, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
@@ -667,12 +671,12 @@ HostImage PassExecutor::download(const std::string& name, uint32_t level, uint32
   HostImage out = HostImage::zeros(w, h, im.desc.format);
   Buffer staging = createHostBuffer(impl_->ctx, out.bytes.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT);
   impl_->ctx.submitAndWait([&](VkCommandBuffer c) {
-    const VkImageSubresourceRange range{VK_IMAGE_ASPECT_COLOR_BIT, level, 1, layer, 1};
+    const VkImageSubresourceRange range{aspectOf(im.desc.format), level, 1, layer, 1};
     imageBarrier(c, im.image.image, range, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
                  VK_PIPELINE_STAGE_ALL_COMMANDS_BIT, VK_ACCESS_MEMORY_WRITE_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
                  VK_ACCESS_TRANSFER_READ_BIT);
     VkBufferImageCopy copy{};
-    copy.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, level, layer, 1};
+    copy.imageSubresource = {aspectOf(im.desc.format), level, layer, 1};
     copy.imageExtent = {w, h, 1};
     vkCmdCopyImageToBuffer(c, im.image.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging.buffer, 1, &copy);
     imageBarrier(c, im.image.image, range, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,

@@ -16,6 +16,8 @@ const HostImage* inputFor(ImageRole role, const RunInputs& inputs) {
   switch (role) {
     case ImageRole::InputDepth:
       return &inputs.lightDepth;
+    case ImageRole::InputHardwareDepth:
+      return &inputs.hardwareDepth;
     case ImageRole::InputPosition:
       return &inputs.position;
     case ImageRole::InputNormal:

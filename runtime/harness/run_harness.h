@@ -30,6 +30,7 @@ struct RunInputs {
   uint32_t mapSize = 0, width = 0, height = 0;  // shadow-map side, screen size
   HostImage lightDepth;                         // InputDepth, R32F map x map
   HostImage position, normal;                   // InputPosition / InputNormal, RGBA32F w x h
+  HostImage hardwareDepth;  // InputHardwareDepth: the light pass's depth attachment (a depth_input filter)
 };
 
 struct RunOptions {

@@ -17,7 +17,7 @@ void fitAndRasterize(VulkanContext& ctx, PreparedScene& p) {
   p.setup = setupFrame(p.scene, p.settings.map, p.settings.screen, p.settings.screen, p.settings.cubeTanHalf);
   setupCascades(p.scene, p.settings.cascades, p.setup);
   setupLightSamples(p.scene, p.settings.lightSamples, p.setup);
-  p.raster = rasterize(ctx, p.scene, p.setup);
+  p.raster = rasterize(ctx, p.scene, p.setup, p.settings.hardwareDepth);
 }
 
 }  // namespace
@@ -62,10 +62,11 @@ std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, Scene scen
 void setFilterViews(SceneSettings& s, const nlohmann::json& spec) {
   s.cascades = cascadeConfigFromSpec(spec);
   s.lightSamples = lightSampleConfigFromSpec(spec);
+  s.hardwareDepth = hardwareDepthFromSpec(spec);
 }
 
 bool sameFilterViews(const SceneSettings& a, const SceneSettings& b) {
-  return a.cascades == b.cascades && a.lightSamples == b.lightSamples;
+  return a.cascades == b.cascades && a.lightSamples == b.lightSamples && a.hardwareDepth == b.hardwareDepth;
 }
 
 std::shared_ptr<const PreparedScene> prepareSceneForFilter(VulkanContext& ctx,
@@ -111,16 +112,18 @@ RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene) 
   setFilterViews(wanted, spec);
   if (!sameFilterViews(wanted, scene.settings))
     throw std::invalid_argument(fmt::format(
-        "filter '{}' has {} cascades and {} light views but scene '{}' was prepared with {} and {}: prepare it with "
-        "the manifest's views (setFilterViews(settings, manifest.spec))",
-        passes.manifest.filter, wanted.cascades.count, wanted.lightSamples.count, scene.scene.name,
-        scene.settings.cascades.count, scene.settings.lightSamples.count));
+        "filter '{}' has {} cascades, {} light views and {} depth input but scene '{}' was prepared with {}, {} and "
+        "{}: prepare it with the manifest's views (setFilterViews(settings, manifest.spec))",
+        passes.manifest.filter, wanted.cascades.count, wanted.lightSamples.count, toString(wanted.hardwareDepth.format),
+        scene.scene.name, scene.settings.cascades.count, scene.settings.lightSamples.count,
+        toString(scene.settings.hardwareDepth.format)));
   RunInputs inputs;
   inputs.frame = scene.setup.frame;
   inputs.mapSize = scene.setup.mapSize;
   inputs.width = scene.setup.width;
   inputs.height = scene.setup.height;
   inputs.lightDepth = scene.raster.lightDepth;
+  inputs.hardwareDepth = scene.raster.hardwareDepth;
   inputs.position = scene.raster.gbufferPosition;
   inputs.normal = scene.raster.gbufferNormal;
   return inputs;

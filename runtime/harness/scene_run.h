@@ -41,9 +41,13 @@ struct SceneSettings {
   // depth is then an atlas of hard views from points on the light; the reference does not depend
   // on them either.
   LightSampleConfig lightSamples;
+  // A hardware-depth filter's depth attachment (hardwareDepthFromSpec of its manifest): the light
+  // pass then also keeps its depth attachment in that format and direction, the filter's input.
+  HardwareDepth hardwareDepth;
 };
 
-// The light views a filter's manifest asks for (its cascades, its light samples), set into `s`.
+// The light views a filter's manifest asks for (its cascades, its light samples, the depth
+// attachment it reads), set into `s`.
 // Throws std::invalid_argument on a malformed spec.
 void setFilterViews(SceneSettings& s, const nlohmann::json& spec);
 // True when scenes prepared with `a` and `b` have the same light views.
@@ -92,7 +96,8 @@ struct SceneRunResult {
 void checkLightType(const Manifest& manifest, LightType sceneLight, const std::string& sceneName);
 
 // The harness inputs of a prepared scene for a filter: its frame, light depth and G-buffer.
-// Throws std::invalid_argument when the filter's light type or light views (cascades, light samples) are not the scene's.
+// Throws std::invalid_argument when the filter's light type or light views (cascades, light samples) are not the
+// scene's.
 RunInputs sceneInputs(const CompiledPasses& passes, const PreparedScene& scene);
 
 SceneRunResult runOnScene(VulkanContext& ctx, const CompiledPasses& passes, const PreparedScene& scene,

@@ -79,13 +79,36 @@ struct PassSpec {
   std::string vert, frag;
   uint32_t attributes = 1;  // 1: position only, 2: position + normal
   RasterPush push{};
+  HardwareDepth depth;  // the depth attachment's format and direction; kept as the last output if asked
 };
 
-// One offscreen render pass: color targets + D32 depth (LESS), the scene drawn once, every
-// color target copied back to the host.
+// Reverse Z from a zero-to-one clip matrix: z_c' = w_c - z_c, so depth' = 1 - depth.
+glm::mat4 reversedDepth(const glm::mat4& clip) {
+  glm::mat4 r(1.0f);  // column-major: r[col][row]
+  r[2][2] = -1.0f;
+  r[3][2] = 1.0f;
+  return r * clip;
+}
+
+// The word a cleared depth attachment holds: the far value (1, reversed 0) in its format.
+uint32_t farDepthWord(const HardwareDepth& d) {
+  if (d.format == ImageFormat::D24) return d.reversed ? 0u : 0x00FFFFFFu;
+  const float v = d.reversed ? 0.0f : 1.0f;
+  uint32_t w;
+  std::memcpy(&w, &v, 4);
+  return w;
+}
+
+// One offscreen render pass: color targets + a depth attachment (D32 LESS unless spec.depth asks
+// for another format or reverse Z: GREATER, cleared to 0), the scene drawn once, every color
+// target copied back to the host, then the depth attachment's words when spec.depth.kept().
 std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geometry, const PassSpec& spec) {
   const VkDevice dev = ctx.device();
-  const VkFormat depthFormat = VK_FORMAT_D32_SFLOAT;
+  const bool keepDepth = spec.depth.kept();
+  const VkFormat depthFormat = keepDepth ? vkFormatOf(spec.depth.format) : VK_FORMAT_D32_SFLOAT;
+  if (!(ctx.formatFeatures(depthFormat) & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT))
+    throw VulkanError(fmt::format("rasterize: {} is not a depth attachment format on {}", toString(spec.depth.format),
+                                  ctx.deviceName()));
   std::vector<Image> targets;
   std::vector<UniqueImageView> views;
   for (ImageFormat f : spec.colors) {
@@ -98,7 +121,9 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
     views.push_back(createView(ctx, targets.back(), VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_COLOR_BIT, 0, 1));
   }
   Image depth =
-      createImage(ctx, depthFormat, spec.width, spec.height, 1, 1, VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT);
+      createImage(ctx, depthFormat, spec.width, spec.height, 1, 1,
+                  VK_IMAGE_USAGE_DEPTH_STENCIL_ATTACHMENT_BIT |
+                      (keepDepth ? VkImageUsageFlags(VK_IMAGE_USAGE_TRANSFER_SRC_BIT) : VkImageUsageFlags(0)));
   UniqueImageView depthView = createView(ctx, depth, VK_IMAGE_VIEW_TYPE_2D, VK_IMAGE_ASPECT_DEPTH_BIT, 0, 1);
 
   const uint32_t n = uint32_t(spec.colors.size());
@@ -121,11 +146,11 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
   da.format = depthFormat;
   da.samples = VK_SAMPLE_COUNT_1_BIT;
   da.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
-  da.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+  da.storeOp = keepDepth ? VK_ATTACHMENT_STORE_OP_STORE : VK_ATTACHMENT_STORE_OP_DONT_CARE;
   da.stencilLoadOp = VK_ATTACHMENT_LOAD_OP_DONT_CARE;
   da.stencilStoreOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
   da.initialLayout = VK_IMAGE_LAYOUT_UNDEFINED;
-  da.finalLayout = VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
+  da.finalLayout = keepDepth ? VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL : VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL;
   attachments.push_back(da);
   const VkAttachmentReference depthRef{n, VK_IMAGE_LAYOUT_DEPTH_STENCIL_ATTACHMENT_OPTIMAL};
   VkSubpassDescription subpass{};
@@ -141,8 +166,11 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
        VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT |
            VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_READ_BIT,
        0},
-      {0, VK_SUBPASS_EXTERNAL, VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT, VK_PIPELINE_STAGE_TRANSFER_BIT,
-       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT, 0}};
+      {0, VK_SUBPASS_EXTERNAL,
+       VK_PIPELINE_STAGE_COLOR_ATTACHMENT_OUTPUT_BIT | VK_PIPELINE_STAGE_LATE_FRAGMENT_TESTS_BIT,
+       VK_PIPELINE_STAGE_TRANSFER_BIT,
+       VK_ACCESS_COLOR_ATTACHMENT_WRITE_BIT | VK_ACCESS_DEPTH_STENCIL_ATTACHMENT_WRITE_BIT, VK_ACCESS_TRANSFER_READ_BIT,
+       0}};
   VkRenderPassCreateInfo rpInfo{VK_STRUCTURE_TYPE_RENDER_PASS_CREATE_INFO};
   rpInfo.attachmentCount = uint32_t(attachments.size());
   rpInfo.pAttachments = attachments.data();
@@ -218,7 +246,7 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
   VkPipelineDepthStencilStateCreateInfo ds{VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO};
   ds.depthTestEnable = VK_TRUE;
   ds.depthWriteEnable = VK_TRUE;
-  ds.depthCompareOp = VK_COMPARE_OP_LESS;
+  ds.depthCompareOp = spec.depth.reversed ? VK_COMPARE_OP_GREATER : VK_COMPARE_OP_LESS;
   std::vector<VkPipelineColorBlendAttachmentState> blend(n);
   for (auto& b : blend)
     b.colorWriteMask =
@@ -244,14 +272,16 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
 
   std::vector<Buffer> staging;
   std::vector<HostImage> out;
-  for (ImageFormat f : spec.colors) {
+  std::vector<ImageFormat> outFormats = spec.colors;
+  if (keepDepth) outFormats.push_back(spec.depth.format);
+  for (ImageFormat f : outFormats) {
     out.push_back(HostImage::zeros(spec.width, spec.height, f));
     staging.push_back(createHostBuffer(ctx, out.back().bytes.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT));
   }
   ctx.submitAndWait([&](VkCommandBuffer cmd) {
     std::vector<VkClearValue> clears;
     for (const auto& c : spec.clears) clears.push_back(VkClearValue{.color = c});
-    clears.push_back(VkClearValue{.depthStencil = {1.0f, 0}});
+    clears.push_back(VkClearValue{.depthStencil = {spec.depth.reversed ? 0.0f : 1.0f, 0}});
     VkRenderPassBeginInfo begin{VK_STRUCTURE_TYPE_RENDER_PASS_BEGIN_INFO};
     begin.renderPass = rp;
     begin.framebuffer = fb;
@@ -261,7 +291,11 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
     vkCmdBeginRenderPass(cmd, &begin, VK_SUBPASS_CONTENTS_INLINE);
     if (geometry.indexCount > 0) {
       vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline);
-      vkCmdPushConstants(cmd, pl, range.stageFlags, 0, sizeof(RasterPush), &spec.push);
+      RasterPush push = spec.push;
+      if (spec.depth.reversed)
+        std::memcpy(push.viewProj, glm::value_ptr(reversedDepth(glm::make_mat4(spec.push.viewProj))),
+                    sizeof push.viewProj);
+      vkCmdPushConstants(cmd, pl, range.stageFlags, 0, sizeof(RasterPush), &push);
       const VkDeviceSize offset = 0;
       const VkBuffer vb = geometry.vertices.buffer;
       vkCmdBindVertexBuffers(cmd, 0, 1, &vb, &offset);
@@ -275,56 +309,97 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
       copy.imageExtent = {spec.width, spec.height, 1};
       vkCmdCopyImageToBuffer(cmd, targets[i].image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging[i].buffer, 1, &copy);
     }
+    if (keepDepth) {
+      VkBufferImageCopy copy{};
+      copy.imageSubresource = {VK_IMAGE_ASPECT_DEPTH_BIT, 0, 0, 1};
+      copy.imageExtent = {spec.width, spec.height, 1};
+      vkCmdCopyImageToBuffer(cmd, depth.image, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, staging[n].buffer, 1, &copy);
+    }
     VkMemoryBarrier toHost{VK_STRUCTURE_TYPE_MEMORY_BARRIER};
     toHost.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
     toHost.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &toHost, 0, nullptr, 0,
                          nullptr);
   });
-  for (uint32_t i = 0; i < n; ++i) std::memcpy(out[i].bytes.data(), staging[i].mapped, out[i].bytes.size());
+  for (size_t i = 0; i < out.size(); ++i) std::memcpy(out[i].bytes.data(), staging[i].mapped, out[i].bytes.size());
+  if (keepDepth && spec.depth.format == ImageFormat::D24)
+    for (size_t t = 0; t < out.back().bytes.size(); t += 4) out.back().bytes[t + 3] = 0;  // X8: undefined high byte
   return out;
 }
 
 // A point light's light depth (cube_setup.h): each face rendered on its own into an N x N target
 // (N = the atlas cell), copied into its cell of the mapSize^2 atlas; the rest stays "nothing hit".
-HostImage renderCubeAtlas(VulkanContext& ctx, const Geometry& geometry, const FrameSetup& setup, PassSpec light) {
+// The atlases a light pass fills: the linear depth, then the depth attachment's words if kept;
+// every texel starts as "nothing hit" (1.0, or the attachment's far value).
+std::vector<HostImage> emptyAtlases(uint32_t mapSize, const PassSpec& light) {
+  std::vector<HostImage> atlases{
+      HostImage::fromFloats(mapSize, mapSize, ImageFormat::R32F, std::vector<float>(size_t(mapSize) * mapSize, 1.0f))};
+  if (light.depth.kept()) {
+    HostImage words = HostImage::zeros(mapSize, mapSize, light.depth.format);
+    const uint32_t far = farDepthWord(light.depth);
+    for (size_t t = 0; t < words.bytes.size(); t += 4) std::memcpy(words.bytes.data() + t, &far, 4);
+    atlases.push_back(std::move(words));
+  }
+  return atlases;
+}
+
+// Copies every output of one view into its tile at (x0, y0) of the matching atlas.
+void placeTile(std::vector<HostImage>& atlases, const std::vector<HostImage>& view, uint32_t x0, uint32_t y0) {
+  for (size_t k = 0; k < atlases.size(); ++k)
+    for (uint32_t y = 0; y < view[k].height; ++y)
+      std::memcpy(atlases[k].bytes.data() + atlases[k].texelOffset(x0, y0 + y),
+                  view[k].bytes.data() + view[k].texelOffset(0, y), size_t(view[k].width) * 4);
+}
+
+std::vector<HostImage> renderCubeAtlas(VulkanContext& ctx, const Geometry& geometry, const FrameSetup& setup,
+                                       PassSpec light) {
   const uint32_t n = cubeCellSize(setup.mapSize);
-  std::vector<float> atlas(size_t(setup.mapSize) * setup.mapSize, 1.0f);
+  std::vector<HostImage> atlases = emptyAtlases(setup.mapSize, light);
   light.width = light.height = n;
   for (int face = 0; face < 6; ++face) {
     std::memcpy(light.push.viewProj, glm::value_ptr(setup.faceViewProj[face]), sizeof light.push.viewProj);
     for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = setup.faceZRow[face][c];
-    const std::vector<float> texels = renderOffscreen(ctx, geometry, light).at(0).floats();
     const glm::uvec2 o = cubeCellOrigin(face, setup.mapSize);
-    for (uint32_t y = 0; y < n; ++y)
-      std::memcpy(&atlas[size_t(o.y + y) * setup.mapSize + o.x], &texels[size_t(y) * n], n * sizeof(float));
+    placeTile(atlases, renderOffscreen(ctx, geometry, light), o.x, o.y);
   }
-  return HostImage::fromFloats(setup.mapSize, setup.mapSize, ImageFormat::R32F, atlas);
+  return atlases;
 }
 
 // A cascaded sun (runtime/scene/cascade_setup.h) or a light-sampled spot (light_sample_setup.h):
 // view i rendered at its tile's size with its own clip matrix, copied into tile (i mod G, i div G)
 // of one atlas, tiles floor(mapSize / G) a side (texels outside every tile keep "nothing hit").
 // Same light-view z row, same linear depth range for every view.
-HostImage renderTileAtlas(VulkanContext& ctx, const Geometry& geometry, uint32_t mapSize, int gridSide,
-                          const glm::mat4* viewProj, int count, PassSpec light) {
+std::vector<HostImage> renderTileAtlas(VulkanContext& ctx, const Geometry& geometry, uint32_t mapSize, int gridSide,
+                                       const glm::mat4* viewProj, int count, PassSpec light) {
   const uint32_t grid = uint32_t(gridSide), tile = mapSize / grid;
-  HostImage atlas =
-      HostImage::fromFloats(mapSize, mapSize, ImageFormat::R32F, std::vector<float>(size_t(mapSize) * mapSize, 1.0f));
+  std::vector<HostImage> atlases = emptyAtlases(mapSize, light);
   light.width = light.height = tile;
   for (int i = 0; i < count; ++i) {
     std::memcpy(light.push.viewProj, glm::value_ptr(viewProj[i]), sizeof light.push.viewProj);
-    const HostImage t = std::move(renderOffscreen(ctx, geometry, light).at(0));
-    const uint32_t x0 = uint32_t(i) % grid * tile, y0 = uint32_t(i) / grid * tile;
-    for (uint32_t y = 0; y < tile; ++y)
-      std::memcpy(atlas.bytes.data() + atlas.texelOffset(x0, y0 + y), t.bytes.data() + t.texelOffset(0, y), tile * 4);
+    placeTile(atlases, renderOffscreen(ctx, geometry, light), uint32_t(i) % grid * tile, uint32_t(i) / grid * tile);
   }
-  return atlas;
+  return atlases;
 }
 
 }  // namespace
 
-RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup& setup) {
+HardwareDepth hardwareDepthFromSpec(const nlohmann::json& spec) {
+  HardwareDepth d;
+  if (!spec.is_object() || !spec.contains("depth_input")) return d;
+  const nlohmann::json& j = spec["depth_input"];
+  const std::string format = j.value("format", std::string("linear"));
+  if (format == "d32")
+    d.format = ImageFormat::D32F;
+  else if (format == "d24")
+    d.format = ImageFormat::D24;
+  else if (format != "linear")
+    throw VulkanError("manifest spec: unknown depth_input format '" + format + "'");
+  d.reversed = j.value("z", std::string("standard")) == "reverse";
+  return d;
+}
+
+RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup& setup,
+                        const HardwareDepth& hardwareDepth) {
   const Geometry geometry = uploadGeometry(ctx, scene);
   RasterOutputs out;
 
@@ -337,20 +412,24 @@ RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup
   light.vert = "light_depth.vert";
   light.frag = "light_depth.frag";
   light.attributes = 1;
+  light.depth = hardwareDepth;
   std::memcpy(light.push.viewProj, glm::value_ptr(setup.lightViewProj), sizeof light.push.viewProj);
   for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = setup.lightView[c][2];  // row 2 of a column-major matrix
   light.push.depthRange[0] = setup.nearPlane;
   light.push.depthRange[1] = setup.farPlane;
+  std::vector<HostImage> light0;
   if (setup.cube)
-    out.lightDepth = renderCubeAtlas(ctx, geometry, setup, light);
+    light0 = renderCubeAtlas(ctx, geometry, setup, light);
   else if (setup.cascadeCount > 0)
-    out.lightDepth = renderTileAtlas(ctx, geometry, setup.mapSize, setup.cascadeGrid, setup.cascadeViewProj.data(),
-                                     setup.cascadeCount, light);
+    light0 = renderTileAtlas(ctx, geometry, setup.mapSize, setup.cascadeGrid, setup.cascadeViewProj.data(),
+                             setup.cascadeCount, light);
   else if (!setup.lightSampleViewProj.empty())
-    out.lightDepth = renderTileAtlas(ctx, geometry, setup.mapSize, setup.lightSampleGrid,
-                                     setup.lightSampleViewProj.data(), int(setup.lightSampleViewProj.size()), light);
+    light0 = renderTileAtlas(ctx, geometry, setup.mapSize, setup.lightSampleGrid, setup.lightSampleViewProj.data(),
+                             int(setup.lightSampleViewProj.size()), light);
   else
-    out.lightDepth = std::move(renderOffscreen(ctx, geometry, light).at(0));
+    light0 = renderOffscreen(ctx, geometry, light);
+  out.lightDepth = std::move(light0.at(0));
+  if (hardwareDepth.kept()) out.hardwareDepth = std::move(light0.at(1));
 
   PassSpec camera;
   camera.width = setup.width;

@@ -13,22 +13,22 @@
 #include <vulkan/vulkan.h>
 
 // Entry points resolved without an instance.
-#define SHADOWC_VK_GLOBAL_FUNCTIONS(X)    \
-  X(vkCreateInstance)                     \
-  X(vkEnumerateInstanceLayerProperties)   \
+#define SHADOWC_VK_GLOBAL_FUNCTIONS(X)      \
+  X(vkCreateInstance)                       \
+  X(vkEnumerateInstanceLayerProperties)     \
   X(vkEnumerateInstanceExtensionProperties) \
   X(vkEnumerateInstanceVersion)
 
-#define SHADOWC_VK_INSTANCE_FUNCTIONS(X)       \
-  X(vkDestroyInstance)                         \
-  X(vkEnumeratePhysicalDevices)                \
-  X(vkGetPhysicalDeviceProperties)             \
-  X(vkGetPhysicalDeviceProperties2)            \
-  X(vkGetPhysicalDeviceQueueFamilyProperties)  \
-  X(vkGetPhysicalDeviceMemoryProperties)       \
-  X(vkGetPhysicalDeviceFormatProperties)       \
-  X(vkGetPhysicalDeviceFeatures)               \
-  X(vkEnumerateDeviceExtensionProperties)      \
+#define SHADOWC_VK_INSTANCE_FUNCTIONS(X)      \
+  X(vkDestroyInstance)                        \
+  X(vkEnumeratePhysicalDevices)               \
+  X(vkGetPhysicalDeviceProperties)            \
+  X(vkGetPhysicalDeviceProperties2)           \
+  X(vkGetPhysicalDeviceQueueFamilyProperties) \
+  X(vkGetPhysicalDeviceMemoryProperties)      \
+  X(vkGetPhysicalDeviceFormatProperties)      \
+  X(vkGetPhysicalDeviceFeatures)              \
+  X(vkEnumerateDeviceExtensionProperties)     \
   X(vkCreateDevice)
 
 #define SHADOWC_VK_DEVICE_FUNCTIONS(X) \
@@ -93,6 +93,7 @@
   X(vkCmdCopyBufferToImage)            \
   X(vkCmdCopyImageToBuffer)            \
   X(vkCmdClearColorImage)              \
+  X(vkCmdClearDepthStencilImage)       \
   X(vkCmdBeginRenderPass)              \
   X(vkCmdEndRenderPass)                \
   X(vkCmdSetViewport)                  \

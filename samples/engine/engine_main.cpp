@@ -60,6 +60,10 @@ VkFormat vkFormat(sf::Format f) {
       return VK_FORMAT_R16_UNORM;
     case sf::Format::RG16Unorm:
       return VK_FORMAT_R16G16_UNORM;
+    case sf::Format::D32F:  // a depth_input filter's attachment (this sample's filter reads linear depth)
+      return VK_FORMAT_D32_SFLOAT;
+    case sf::Format::D24:
+      return VK_FORMAT_X8_D24_UNORM_PACK32;
     case sf::Format::RGBA16Unorm:
       return VK_FORMAT_R16G16B16A16_UNORM;
     case sf::Format::R32UI:

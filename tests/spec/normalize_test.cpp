@@ -208,6 +208,29 @@ TEST(Normalize, WeightsDefaultToUniformAndFormFactorIsKeptWhereItActs) {
   EXPECT_EQ(codes("weights cosine"), Codes{"E0302"});
 }
 
+TEST(Normalize, DepthInputDefaultsToLinearAndHardwareFormatsRoundTrip) {
+  // `depth_input` (docs/dsl.md): linear by default and then absent from the JSON and the print;
+  // a hardware format with its Z direction is kept, printed and read back.
+  EXPECT_EQ(load("").depthInput, DepthInputSpec{});
+  EXPECT_FALSE(specToJson(load("")).contains("depth_input"));
+  EXPECT_EQ(printFilter(load("")).find("depth_input"), std::string::npos);
+  EXPECT_EQ(load("depth_input linear").depthInput, DepthInputSpec{});
+  const FilterSpec d24 = load("depth_input d24");
+  EXPECT_EQ(d24.depthInput, (DepthInputSpec{DepthInputFormat::D24, false}));
+  EXPECT_EQ(specToJson(d24)["depth_input"].dump(), R"({"format":"d24","z":"standard"})");
+  const FilterSpec rev = load("light sun\ndepth_input d32(z: reverse)");
+  EXPECT_EQ(rev.depthInput, (DepthInputSpec{DepthInputFormat::D32, true}));
+  for (const FilterSpec& s : {d24, rev}) {
+    const LoadResult back = loadFilterSource(printFilter(s), "printed.shadow");
+    ASSERT_TRUE(back.spec) << formatDiagnostics(back);
+    EXPECT_EQ(back.spec->depthInput, s.depthInput);
+  }
+  EXPECT_EQ(codes("depth_input d16"), Codes{"E0302"});
+  EXPECT_EQ(codes("light sun\ncascades 4\ndepth_input d32"), Codes{"E0452"});  // not verified for the atlas
+  EXPECT_EQ(codes("light sun\ncascades 4\ndepth_input linear"), Codes{});
+  EXPECT_EQ(codes("depth_input d32(z: inverted)"), Codes{"E0302"});
+}
+
 TEST(Normalize, ResolutionIsThePlannedMapAndRaisesTheDefaultMapSize) {
   // `resolution N` (docs/dsl.md): absent by default and then absent from the JSON and the print;
   // above the default map_size it raises it; above an explicit one it is E0460.
