@@ -105,10 +105,11 @@ uint32_t farDepthWord(const HardwareDepth& d) {
 std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geometry, const PassSpec& spec) {
   const VkDevice dev = ctx.device();
   const bool keepDepth = spec.depth.kept();
-  const VkFormat depthFormat = keepDepth ? vkFormatOf(spec.depth.format) : VK_FORMAT_D32_SFLOAT;
+  const ImageFormat attachment = keepDepth ? spec.depth.format : ImageFormat::D32F;
+  const VkFormat depthFormat = vkFormatOf(attachment);
   if (!(ctx.formatFeatures(depthFormat) & VK_FORMAT_FEATURE_DEPTH_STENCIL_ATTACHMENT_BIT))
-    throw VulkanError(fmt::format("rasterize: {} is not a depth attachment format on {}", toString(spec.depth.format),
-                                  ctx.deviceName()));
+    throw VulkanError(
+        fmt::format("rasterize: {} is not a depth attachment format on {}", toString(attachment), ctx.deviceName()));
   std::vector<Image> targets;
   std::vector<UniqueImageView> views;
   for (ImageFormat f : spec.colors) {
@@ -327,8 +328,6 @@ std::vector<HostImage> renderOffscreen(VulkanContext& ctx, const Geometry& geome
   return out;
 }
 
-// A point light's light depth (cube_setup.h): each face rendered on its own into an N x N target
-// (N = the atlas cell), copied into its cell of the mapSize^2 atlas; the rest stays "nothing hit".
 // The atlases a light pass fills: the linear depth, then the depth attachment's words if kept;
 // every texel starts as "nothing hit" (1.0, or the attachment's far value).
 std::vector<HostImage> emptyAtlases(uint32_t mapSize, const PassSpec& light) {
@@ -348,9 +347,12 @@ void placeTile(std::vector<HostImage>& atlases, const std::vector<HostImage>& vi
   for (size_t k = 0; k < atlases.size(); ++k)
     for (uint32_t y = 0; y < view[k].height; ++y)
       std::memcpy(atlases[k].bytes.data() + atlases[k].texelOffset(x0, y0 + y),
-                  view[k].bytes.data() + view[k].texelOffset(0, y), size_t(view[k].width) * 4);
+                  view[k].bytes.data() + view[k].texelOffset(0, y),
+                  size_t(view[k].width) * bytesPerTexel(view[k].format));
 }
 
+// A point light's light depth (cube_setup.h): each face rendered on its own into an N x N target
+// (N = the atlas cell), copied into its cell of the mapSize^2 atlas; the rest stays "nothing hit".
 std::vector<HostImage> renderCubeAtlas(VulkanContext& ctx, const Geometry& geometry, const FrameSetup& setup,
                                        PassSpec light) {
   const uint32_t n = cubeCellSize(setup.mapSize);
