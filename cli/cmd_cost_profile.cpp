@@ -75,7 +75,7 @@ CommandRunner registerCostProfile(CLI::App& app) {
       if (missing) fmt::print("cost-profile: {} rows have no counts in --counts-from\n", missing);
     }
     if (!o->profile.empty()) {
-      const sweep::CostProfile p = sweep::loadCostProfile(o->profile);
+      const sweep::CostProfile p = sweep::resolveCostProfile(o->profile);
       printQuality(fmt::format("{} ({})", o->profile, p.device), sweep::assessFit(p, samples));
       return 0;
     }

@@ -156,7 +156,7 @@ CommandRunner registerPlan(CLI::App& app) {
     const planning::PlanModel model = planning::loadModel(o->model);
     planning::PlanRequest r;
     if (!o->costProfile.empty())
-      r.costProfile = std::make_shared<const sweep::CostProfile>(sweep::loadCostProfile(o->costProfile));
+      r.costProfile = std::make_shared<const sweep::CostProfile>(sweep::resolveCostProfile(o->costProfile));
     r.scenes = o->scenes;
     if (o->maxRmse >= 0) r.maxRmse = o->maxRmse;
     if (o->budgetMs >= 0) r.budgetMs = o->budgetMs;

@@ -73,7 +73,7 @@ int runSweepCommand(const SweepArgs& a) {
   sweep::SweepSpec spec = sweep::loadSweepSpec(a.spec);
   // A profile prices a row from its work counts, so it needs them; it is read before anything runs.
   std::optional<sweep::CostProfile> profile;
-  if (!a.costProfile.empty()) profile = sweep::loadCostProfile(a.costProfile);
+  if (!a.costProfile.empty()) profile = sweep::resolveCostProfile(a.costProfile);
   if (a.counters || profile) spec.counters = true;
   sweep::SweepOptions o;
   o.outDir = a.out;

@@ -9,8 +9,14 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "embed/embedded_file.h"
 #include "plan/image_formats.h"
 #include "spec/filter_spec.h"
+
+namespace shadowc::cost_profiles {
+std::span<const EmbeddedFile> all();
+std::string_view find(std::string_view path);
+}  // namespace shadowc::cost_profiles
 
 namespace shadowc::sweep {
 
@@ -335,6 +341,28 @@ CostProfile parseCostProfile(const std::string& text, const std::string& label) 
 
 CostProfile loadCostProfile(const std::filesystem::path& file) {
   return parseCostProfile(readText(file, "cost profile"), file.string());
+}
+
+std::vector<std::string> builtInCostProfiles() {
+  std::vector<std::string> names;
+  for (const EmbeddedFile& f : cost_profiles::all()) {
+    std::string n(f.path);
+    if (n.ends_with(".json")) names.push_back(n.substr(0, n.size() - 5));
+  }
+  std::sort(names.begin(), names.end());
+  return names;
+}
+
+CostProfile resolveCostProfile(const std::string& arg) {
+  const bool file = arg.find('/') != std::string::npos || arg.ends_with(".json") ||
+                    std::filesystem::is_regular_file(arg);
+  if (file) return loadCostProfile(arg);
+  const std::string_view text = cost_profiles::find(arg + ".json");
+  if (!text.empty()) return parseCostProfile(std::string(text), "built-in cost profile " + arg);
+  std::string names;
+  for (const std::string& n : builtInCostProfiles()) names += (names.empty() ? "" : ", ") + n;
+  throw std::runtime_error(
+      fmt::format("{}: error: not a built-in cost profile ({}) nor a profile file", arg, names));
 }
 
 }  // namespace shadowc::sweep

@@ -83,5 +83,10 @@ FitQuality assessFit(const CostProfile& profile, const std::vector<CostSample>& 
 std::string costProfileToJson(const CostProfile& profile);
 CostProfile parseCostProfile(const std::string& jsonText, const std::string& label);
 CostProfile loadCostProfile(const std::filesystem::path& file);
+// The profiles built into shadowc (samples/cost/*.json), by name: "lavapipe", "h200".
+std::vector<std::string> builtInCostProfiles();
+// `--cost-profile ARG`: a file when ARG has a '/', ends in ".json" or names a file here, else
+// the built-in profile of that name; anything else is one message listing the built-in names.
+CostProfile resolveCostProfile(const std::string& arg);
 
 }  // namespace shadowc::sweep

@@ -5,6 +5,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "support/test_support.h"
 
 namespace shadowc::sweep {
 namespace {
@@ -108,6 +112,30 @@ TEST(CostProfile, JsonRoundTripsAndBadProfilesAreRefused) {
   negative.insert(negative.find("\"fixed_ms\": ") + 12, "-");
   EXPECT_NE(errorOf(negative).find("must be finite and >= 0"), std::string::npos) << negative.substr(0, 300);
   EXPECT_EQ(errorOf(text), "");
+}
+
+TEST(CostProfile, BuiltInProfilesAreTheStoredOnesByName) {
+  // An installed shadowc names the stored profiles without the source tree: each built-in one
+  // is samples/cost/<name>.json, byte for byte once written back.
+  const std::vector<std::string> names = builtInCostProfiles();
+  ASSERT_EQ(names, (std::vector<std::string>{"h200", "lavapipe"}));
+  for (const std::string& n : names) {
+    std::ifstream in(test::sourceDir() / "samples/cost" / (n + ".json"));
+    std::stringstream stored;
+    stored << in.rdbuf();
+    ASSERT_FALSE(stored.str().empty()) << n;
+    EXPECT_EQ(costProfileToJson(resolveCostProfile(n)), stored.str()) << n;
+  }
+  // A path is a file even when its stem is a built-in name; an unknown name lists the names.
+  EXPECT_THROW(resolveCostProfile("./lavapipe"), std::runtime_error);
+  try {
+    resolveCostProfile("h100");
+    ADD_FAILURE() << "an unknown profile name was accepted";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("h100: error: not a built-in cost profile (h200, lavapipe)"),
+              std::string::npos)
+        << e.what();
+  }
 }
 
 }  // namespace
