@@ -32,8 +32,9 @@ struct CompileArgs {
   bool depsFile = false;      // -MD
   std::string depsTarget;     // -MT: the rule's target instead of the outputs
   bool werror = false;
-  bool generic = false;   // --generic
-  bool counters = false;  // --counters
+  bool generic = false;        // --generic
+  bool counters = false;       // --counters
+  bool frameExternal = false;  // --frame-external
   uint32_t lookupSet = 0, lookupBindingBase = 0;
 };
 
@@ -99,6 +100,11 @@ int run(CompileArgs& a, CLI::App& sub) {
     return error(
         "--generic with --emit cpp: the C++ header does not carry the parameter block yet (use manifest.json)");
   options.counters = a.counters;
+  options.frameExternal = a.frameExternal;
+  if (a.frameExternal && !kinds.count(driver::OutputKind::Hlsl) && !kinds.count(driver::OutputKind::Msl))
+    return error(
+        "--frame-external changes the HLSL and MSL lookups: add hlsl or msl to --emit (the GLSL lookup takes "
+        "#define SHADOWC_FRAME_EXTERNAL, docs/integration.md)");
   if (a.counters && kinds.count(driver::OutputKind::CppHeader))
     return error(
         "--counters with --emit cpp: the C++ header describes a filter to ship, the instrumented build "
@@ -167,6 +173,9 @@ CommandRunner registerCompile(CLI::App& app) {
   sub->add_flag("--generic", args->generic,
                 "emit the shade pass as one generic shader: numeric options and tables in a uniform block "
                 "filled from manifest.json \"parameters\", loops dynamic (docs/cli.md)");
+  sub->add_flag("--frame-external", args->frameExternal,
+                "the HLSL/MSL lookup takes the frame as arguments of shadowc_visibilityFrame() instead of "
+                "declaring the ShadowcFrame block (docs/integration.md)");
   sub->add_flag("--counters", args->counters,
                 "the instrumented build: the shade pass also counts its work (fetches, bounds, walk steps) into "
                 "manifest.json's work_counters buffer (docs/manifest.md \"Work counters\")");

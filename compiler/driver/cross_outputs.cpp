@@ -29,9 +29,46 @@ std::string banner(const Manifest& m, const std::string& what, CrossTarget targe
          ". Do not edit.\n";
 }
 
+// The lookup as an engine includes it, its frame from our uniform block, plus a call that keeps
+// shadowc_visibility.
+std::string blockProbe(const Manifest& m, const std::string& lookup) {
+  return lookup + "\nlayout(local_size_x = 1) in;\nvoid main() { " + m.shade.function +
+         "(vec3(0.0), vec3(0.0, 0.0, 1.0)); }\n";
+}
+
+// The lookup with SHADOWC_FRAME_EXTERNAL (docs/integration.md "The lookup's interface"):
+// shadowc_frame() (and a cascaded sun's cascade rows) read private globals that
+// shadowc_visibilityFrame sets from its arguments, so an HLSL or Metal engine passes its own
+// light values instead of binding our block. SPIRV-Cross keeps the globals as `static` in HLSL
+// and as a trailing `thread` argument in MSL, where Private storage cannot be global.
+std::string externalFrameProbe(const Manifest& m, const std::string& lookup) {
+  const bool cascades = m.spec.is_object() && m.spec.contains("cascades");
+  std::string s = "#define SHADOWC_FRAME_EXTERNAL 1\n" + lookup +
+                  "\nshadowc_Frame shadowc_externalFrame;\n"
+                  "shadowc_Frame shadowc_frame() { return shadowc_externalFrame; }\n";
+  std::string params = "vec3 worldPos, vec3 worldNormal, shadowc_Frame frame", sets = "shadowc_externalFrame = frame; ",
+              args = "vec3(0.0), vec3(0.0, 0.0, 1.0), shadowc_Frame(mat4(1.0), vec4(1.0))";
+  if (cascades) {
+    // The cascade fields of frame_block.glsl, in its order (include/shadowc/frame.h).
+    s += "struct shadowc_Cascades {\n  vec4 info;\n  vec4 cameraDepth;\n  vec4 data[8];\n};\n"
+         "shadowc_Cascades shadowc_externalCascades;\n"
+         "vec4 shadowc_cascadeInfo() { return shadowc_externalCascades.info; }\n"
+         "vec4 shadowc_cameraDepthRow() { return shadowc_externalCascades.cameraDepth; }\n"
+         "vec4 shadowc_cascadeData(int i) { return shadowc_externalCascades.data[i]; }\n";
+    params += ", shadowc_Cascades cascades";
+    sets += "shadowc_externalCascades = cascades; ";
+    args +=
+        ", shadowc_Cascades(vec4(1.0), vec4(0.0), vec4[8](vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0), "
+        "vec4(0.0), vec4(0.0), vec4(0.0), vec4(0.0)))";
+  }
+  s += "float " + std::string(kLookupExternalFunction) + "(" + params + ") {\n  " + sets + "\n  return " +
+       m.shade.function + "(worldPos, worldNormal);\n}\n";
+  return s + "layout(local_size_x = 1) in;\nvoid main() { " + kLookupExternalFunction + "(" + args + "); }\n";
+}
+
 }  // namespace
 
-bool crossOutputs(const Manifest& m, const std::vector<EmittedFile>& files, CrossTarget target,
+bool crossOutputs(const Manifest& m, const std::vector<EmittedFile>& files, CrossTarget target, bool externalFrame,
                   std::vector<EmittedFile>& out, std::string& log) {
   const char* ext = crossExtension(target);
   std::set<std::string> done;
@@ -55,9 +92,8 @@ bool crossOutputs(const Manifest& m, const std::vector<EmittedFile>& files, Cros
     log += m.shade.glsl + ": error: no such emitted file to translate\n";
     return false;
   }
-  // The probe: the lookup as an engine includes it, plus a call that keeps shadowc_visibility.
-  const std::string probe = "#version 460\n" + *lookup + "\nlayout(local_size_x = 1) in;\nvoid main() { " +
-                            m.shade.function + "(vec3(0.0), vec3(0.0, 0.0, 1.0)); }\n";
+  const std::string probe =
+      "#version 460\n" + (externalFrame ? externalFrameProbe(m, *lookup) : blockProbe(m, *lookup));
   BackendOptions bo;
   bo.optimize = false;  // inlining would erase the function an engine wants to call
   const SpirvResult spv = compileGlsl(probe, ShaderStage::Compute, m.shade.glsl, {}, bo);
@@ -67,8 +103,9 @@ bool crossOutputs(const Manifest& m, const std::vector<EmittedFile>& files, Cros
   log += r.log;
   if (!r.ok) return false;
   const std::string name = stemOf(m.shade.glsl) + ext;
-  out.push_back({name, banner(m, name, target) + "// Call " + m.shade.function + "(); the probe entry point " +
-                           kLookupProbeEntry + " only keeps it alive.\n" + r.source});
+  const std::string call = externalFrame ? std::string(kLookupExternalFunction) : m.shade.function;
+  out.push_back({name, banner(m, name, target) + "// Call " + call + "(); the probe entry point " + kLookupProbeEntry +
+                           " only keeps it alive.\n" + r.source});
   return true;
 }
 

@@ -47,7 +47,8 @@ bool engineOutputs(FilterEmitResult& emitted, const Options& options, std::strin
   std::vector<EmittedFile> extra;
   for (const auto& [kind, target] :
        {std::pair{OutputKind::Hlsl, CrossTarget::Hlsl}, {OutputKind::Msl, CrossTarget::Msl}})
-    if (options.engineOutputs.count(kind) && !crossOutputs(emitted.manifest, emitted.files, target, extra, log))
+    if (options.engineOutputs.count(kind) &&
+        !crossOutputs(emitted.manifest, emitted.files, target, options.frameExternal, extra, log))
       return false;
   if (options.engineOutputs.count(OutputKind::CppHeader)) {
     if (options.counters) {

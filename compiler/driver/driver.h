@@ -48,6 +48,9 @@ struct Options {
   // --counters: the instrumented build, whose shade pass counts its work per pixel into the
   // manifest's work_counters buffer (plan/work_counters.h, docs/manifest.md "Work counters").
   bool counters = false;
+  // --frame-external: the HLSL / MSL lookup takes the frame as arguments of shadowc_visibilityFrame
+  // instead of declaring our uniform block (driver/cross_outputs.h); GLSL has SHADOWC_FRAME_EXTERNAL.
+  bool frameExternal = false;
   std::set<OutputKind> engineOutputs;  // any of Hlsl, Msl, CppHeader (driver/cross_outputs.h, emit/cpp_header.h)
 };
 

@@ -89,6 +89,68 @@ TEST(CrossOutputs, TheHlslRoundTripRejectsBrokenHlsl) {
   EXPECT_FALSE(compileHlsl(hlsl, ShaderStage::Compute, "undeclared.hlsl", "main").ok);
 }
 
+// --frame-external: the HLSL and MSL lookups take the frame as arguments, for every light type
+// (a spot sample, a sun with cascades, a point light), declare no frame block, and round-trip.
+struct ExternalCase {
+  std::string name, source;
+};
+std::vector<ExternalCase> externalCases() {
+  const std::string pcss = test::readFile(test::samplePath("pcss_poisson"));
+  std::string sun = test::withLight(pcss, "light sun(angle: 0.53)");
+  sun.insert(sun.rfind('}'), "    cascades 4\n");
+  return {{"spot", test::readFile(test::samplePath("vssm_pcf_fallback"))},
+          {"cascaded_sun", sun},
+          {"point", test::withLight(test::readFile(test::samplePath("pcf_poisson16")), "light point(radius: 0.1)")}};
+}
+
+driver::Result compileExternal(const ExternalCase& c, bool external) {
+  driver::Options o;
+  o.engineOutputs = {driver::OutputKind::Hlsl, driver::OutputKind::Msl};
+  o.frameExternal = external;
+  return driver::compileSource(c.source, c.name + ".shadow", o);
+}
+
+TEST(CrossOutputs, TheExternalFrameLookupTakesTheFrameAsArgumentsForEveryLightType) {
+  for (const ExternalCase& c : externalCases()) {
+    const driver::Result r = compileExternal(c, true);
+    ASSERT_TRUE(r.ok) << c.name << ":\n" << r.log;
+    const Manifest& m = r.artifact->manifest;
+    const std::string stem = m.shade.glsl.substr(0, m.shade.glsl.rfind('.'));
+    const std::string* hlsl = r.artifact->file(stem + ".hlsl");
+    const std::string* msl = r.artifact->file(stem + ".metal");
+    ASSERT_TRUE(hlsl && msl) << c.name;
+    const bool cascaded = c.name == "cascaded_sun";
+    const std::string signature = std::string("float ") + kLookupExternalFunction +
+                                  "(float3 worldPos, float3 worldNormal, shadowc_Frame frame" +
+                                  (cascaded ? ", shadowc_Cascades cascades)" : ")");
+    EXPECT_NE(hlsl->find(signature), std::string::npos) << c.name << ": " << signature;
+    EXPECT_NE(msl->find(std::string("float ") + kLookupExternalFunction + "(thread const float3& worldPos"),
+              std::string::npos)
+        << c.name;
+    for (const std::string* text : {hlsl, msl}) {
+      EXPECT_EQ(text->find("shadowc_frameBlock"), std::string::npos) << c.name << ": the block is left out";
+      EXPECT_NE(text->find("struct shadowc_Frame"), std::string::npos) << c.name;
+    }
+    const SpirvResult back = compileHlsl(*hlsl, ShaderStage::Compute, stem + ".hlsl", kLookupProbeEntry);
+    ASSERT_TRUE(back.ok) << c.name << ":\n" << back.log;
+    EXPECT_EQ(validateSpirv(back.words), "") << c.name;
+    // The sibling: without the option the same lookup declares our block and no frame argument.
+    const driver::Result block = compileExternal(c, false);
+    ASSERT_TRUE(block.ok) << block.log;
+    const std::string* blockHlsl = block.artifact->file(stem + ".hlsl");
+    ASSERT_TRUE(blockHlsl);
+    EXPECT_NE(blockHlsl->find("shadowc_frameBlock"), std::string::npos) << c.name;
+    EXPECT_EQ(blockHlsl->find(kLookupExternalFunction), std::string::npos) << c.name;
+  }
+}
+
+TEST(CrossOutputs, TheExternalFrameWithoutHlslOrMslIsOneMessage) {
+  const test::CliResult c = test::runShadowc("compile " + test::samplePath("pcf_grid5x5").string() + " -o " +
+                                             test::freshTempDir("frame-external").string() + " --frame-external");
+  EXPECT_NE(c.code, 0);
+  EXPECT_NE(c.err.find("--frame-external changes the HLSL and MSL lookups"), std::string::npos) << c.err;
+}
+
 TEST(CrossOutputs, NotAskedForNotProduced) {
   const driver::Result r = test::compileSample("pcf_grid5x5");
   ASSERT_TRUE(r.ok) << r.log;
