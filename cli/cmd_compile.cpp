@@ -96,9 +96,6 @@ int run(CompileArgs& a, CLI::App& sub) {
     return error("--lookup-binding-base: at most " + std::to_string(kMaxLookupBindingBase));
   options.lookup = {a.lookupSet, a.lookupBindingBase};
   options.generic = a.generic;
-  if (a.generic && kinds.count(driver::OutputKind::CppHeader))
-    return error(
-        "--generic with --emit cpp: the C++ header does not carry the parameter block yet (use manifest.json)");
   options.counters = a.counters;
   options.frameExternal = a.frameExternal;
   if (a.frameExternal && !kinds.count(driver::OutputKind::Hlsl) && !kinds.count(driver::OutputKind::Msl))

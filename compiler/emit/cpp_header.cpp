@@ -111,6 +111,31 @@ struct Filter {
 #endif
 )";
 
+// The types of a generic shader's parameter block (`--generic`, manifest "parameters"), only in
+// headers that have one, so every other header is unchanged; bump the guard with any change.
+constexpr const char* kParameterTypes = R"(#ifndef SHADOWC_GENERATED_PARAMETER_TYPES_V1
+#define SHADOWC_GENERATED_PARAMETER_TYPES_V1
+namespace shadowc_filters {
+struct ParameterMember {  // one member of the generic block (docs/manifest.md "parameters")
+  const char* name;       // the GLSL member of shadowc_generic
+  const char* option;     // the option or table of the template it replaces
+  Scalar type;
+  std::uint32_t offset;      // std140 byte offset in the block
+  std::uint32_t stride;      // bytes between array elements; 0 for a scalar
+  std::uint32_t count;       // declared array length (1 for a scalar)
+  std::uint32_t components;  // scalars per element
+};
+struct Parameters {  // upload `words` into the uniform buffer the bindings name "parameters"
+  std::uint32_t binding;  // in the shade pass's set 0 (the lookup's: its lookup binding "parameters")
+  const std::uint32_t* words;  // the block's bytes as the manifest's values give them (std140)
+  std::size_t wordCount;
+  const ParameterMember* members;
+  std::size_t memberCount;
+};
+}  // namespace shadowc_filters
+#endif
+)";
+
 std::string identifier(const std::string& s) {
   std::string out;
   for (char c : s) out += (std::isalnum(static_cast<unsigned char>(c)) ? c : '_');
@@ -188,6 +213,35 @@ std::string frameReads(const Manifest& m) {
                            cascaded ? "sizeof(shadowc::ShadowcFrame)" : "shadowc::kFrameBaseSize");
 }
 
+// The generic shade pass's block (plan/generic_block.h): its bytes, as the run harness uploads
+// them (writeParameterBytes), and its members, so an engine can rewrite a value at run time.
+std::string parameterBlock(const Manifest& m) {
+  const Pass* with = nullptr;
+  for (const Pass& p : m.passes)
+    if (p.parameters) {
+      if (with) throw std::invalid_argument("cpp header: more than one pass has a parameter block");
+      with = &p;
+    }
+  if (!with) return "";
+  const ParameterBlock& block = *with->parameters;
+  std::vector<uint8_t> bytes;
+  writeParameterBytes(block, bytes);
+  std::string out = fmt::format("\n// The generic block of pass '{}' (shadowc compile --generic).\n", with->name);
+  out += fmt::format("inline constexpr std::uint32_t parameter_words[{}] = {{", bytes.size() / 4);
+  for (size_t i = 0; i < bytes.size() / 4; ++i) {
+    uint32_t w = 0;
+    for (int b = 0; b < 4; ++b) w |= uint32_t(bytes[4 * i + b]) << (8 * b);
+    out += fmt::format("{}0x{:08x}u{}", i % 8 == 0 ? "\n    " : " ", w, i + 1 < bytes.size() / 4 ? "," : "");
+  }
+  out += "\n};\ninline constexpr ParameterMember parameter_members[] = {\n";
+  for (const BlockMember& b : block.members)
+    out += fmt::format("    {{{}, {}, Scalar::{}, {}, {}, {}, {}}},\n", quoted(b.name), quoted(b.macro),
+                       nameOf(kScalarNames, b.type), b.offset, b.stride, b.count, b.components);
+  return out +
+         fmt::format("}};\ninline constexpr Parameters parameters{{{}, parameter_words, {}, parameter_members, {}}};\n",
+                     block.binding, bytes.size() / 4, block.members.size());
+}
+
 }  // namespace
 
 std::string cppHeaderFileName(const std::string& filterName) { return filterName + ".h"; }
@@ -199,6 +253,8 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
       "#pragma once\n#include <shadowc/frame.h>\n\n#include <cstddef>\n#include <cstdint>\n\n",
       cppHeaderFileName(m.filter), m.compilerVersion, m.filter, m.contentHash);
   out += kTypes;
+  const std::string parameters = parameterBlock(m);
+  if (!parameters.empty()) out += kParameterTypes;
   out += fmt::format("\nnamespace shadowc_filters::{} {{\nusing namespace shadowc_filters;\n\n", identifier(m.filter));
 
   // SPIR-V, one array per distinct file (passes that share a shader share the array).
@@ -258,6 +314,7 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
   out += "};\n\n";
   out += bindingArray(m, "lookup_bindings", m.shade.bindings);
   out += frameReads(m);
+  out += parameters;
   // The map side the filter is planned for (`resolution`, docs/dsl.md): what to allocate; 0 = the engine's choice.
   const int planned = m.spec.is_object() && m.spec.contains("resolution") ? m.spec["resolution"].get<int>() : 0;
   out += fmt::format("inline constexpr std::uint32_t plannedMapSize = {};\n", planned);

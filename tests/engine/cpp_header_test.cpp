@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <fstream>
 
 #include "emit/emit_support.h"
@@ -155,6 +156,58 @@ INSTANTIATE_TEST_SUITE_P(Samples, CppHeader,
                          ::testing::Values("vssm_pcf_fallback", "vsm_blur_mips_bleeding", "layered_vsm_lloyd",
                                            "vssm_minmax_early_out", "pcss_poisson", "vssm_quadtree_table"),
                          [](const auto& info) { return info.param; });
+
+// --generic with --emit cpp: the header carries the shade pass's parameter block, its words
+// equal to the bytes the run harness uploads (writeParameterBytes of the manifest as read back)
+// and every member as the manifest lists it; a wrong word fails to compile. A header without a
+// generic pass declares none of it.
+TEST(CppHeader, TheGenericBlockIsTheManifestsParameters) {
+  driver::Options o;
+  o.engineOutputs = {driver::OutputKind::CppHeader};
+  o.generic = true;
+  for (const char* sample : {"pcss_poisson", "vssm_quadtree_table"}) {
+    const driver::Result r = driver::compileFile(test::samplePath(sample).string(), o);
+    ASSERT_TRUE(r.ok) << r.log;
+    const std::string name = cppHeaderFileName(sample);
+    const Manifest m = manifestFromJson(nlohmann::json::parse(*r.artifact->file(kManifestFile)));
+    const Pass* shade = nullptr;
+    for (const Pass& p : m.passes)
+      if (p.parameters) shade = &p;
+    ASSERT_TRUE(shade) << sample << ": a generic build has a parameter block";
+    std::vector<uint8_t> bytes;
+    writeParameterBytes(*shade->parameters, bytes);
+    std::vector<uint32_t> words(bytes.size() / 4);
+    std::memcpy(words.data(), bytes.data(), words.size() * 4);
+    const std::string ns = fmt::format("shadowc_filters::{}", sample);
+    std::string tu = expectations(m, *r.artifact) +
+                     fmt::format(
+                         "static_assert(f::parameters.binding == {} && f::parameters.wordCount == {} && "
+                         "f::parameters.memberCount == {});\n"
+                         "static_assert(fnv(f::parameters.words, f::parameters.wordCount) == {}ull);\n",
+                         shade->parameters->binding, words.size(), shade->parameters->members.size(), fnv1a(words));
+    for (size_t i = 0; i < shade->parameters->members.size(); ++i) {
+      const BlockMember& b = shade->parameters->members[i];
+      tu += fmt::format(
+          "static_assert(eq(f::parameter_members[{0}].name, {1}) && eq(f::parameter_members[{0}].option, {2}) && "
+          "static_cast<int>(f::parameter_members[{0}].type) == {3} && f::parameter_members[{0}].offset == {4} && "
+          "f::parameter_members[{0}].stride == {5} && f::parameter_members[{0}].count == {6} && "
+          "f::parameter_members[{0}].components == {7});\n",
+          i, q(b.name), q(b.macro), static_cast<int>(b.type), b.offset, b.stride, b.count, b.components);
+    }
+    const auto dir = test::freshTempDir("cpp-header-generic");
+    EXPECT_EQ(compileTu(dir, name, *r.artifact->file(name), tu), 0) << test::readFile(dir / "log.txt");
+    // Sibling: one word of the block off by one must not compile.
+    const std::string wrong = fmt::format("static_assert({}::parameter_words[0] == {}u);\n", ns, words[0] + 1);
+    EXPECT_NE(compileTu(dir, name, *r.artifact->file(name), tu + wrong), 0) << "a wrong block word compiled";
+    std::filesystem::remove_all(dir);
+    // The specialized build's header has no block.
+    driver::Options plain = o;
+    plain.generic = false;
+    const driver::Result p = driver::compileFile(test::samplePath(sample).string(), plain);
+    ASSERT_TRUE(p.ok) << p.log;
+    EXPECT_EQ(p.artifact->file(name)->find("Parameters"), std::string::npos) << sample;
+  }
+}
 
 TEST(CppHeader, TwoFilterHeadersShareOneTranslationUnit) {
   driver::Options o;
