@@ -9,6 +9,7 @@
 
 #include "backend/spirv_backend.h"
 #include "runtime/raster/raster_shaders.h"
+#include "runtime/scene/light_views.h"
 #include "runtime/vulkan/vulkan_context.h"
 #include "runtime/vulkan/vulkan_error.h"
 #include "runtime/vulkan/vulkan_formats.h"
@@ -351,38 +352,6 @@ void placeTile(std::vector<HostImage>& atlases, const std::vector<HostImage>& vi
                   size_t(view[k].width) * bytesPerTexel(view[k].format));
 }
 
-// A point light's light depth (cube_setup.h): each face rendered on its own into an N x N target
-// (N = the atlas cell), copied into its cell of the mapSize^2 atlas; the rest stays "nothing hit".
-std::vector<HostImage> renderCubeAtlas(VulkanContext& ctx, const Geometry& geometry, const FrameSetup& setup,
-                                       PassSpec light) {
-  const uint32_t n = cubeCellSize(setup.mapSize);
-  std::vector<HostImage> atlases = emptyAtlases(setup.mapSize, light);
-  light.width = light.height = n;
-  for (int face = 0; face < 6; ++face) {
-    std::memcpy(light.push.viewProj, glm::value_ptr(setup.faceViewProj[face]), sizeof light.push.viewProj);
-    for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = setup.faceZRow[face][c];
-    const glm::uvec2 o = cubeCellOrigin(face, setup.mapSize);
-    placeTile(atlases, renderOffscreen(ctx, geometry, light), o.x, o.y);
-  }
-  return atlases;
-}
-
-// A cascaded sun (runtime/scene/cascade_setup.h) or a light-sampled spot (light_sample_setup.h):
-// view i rendered at its tile's size with its own clip matrix, copied into tile (i mod G, i div G)
-// of one atlas, tiles floor(mapSize / G) a side (texels outside every tile keep "nothing hit").
-// Same light-view z row, same linear depth range for every view.
-std::vector<HostImage> renderTileAtlas(VulkanContext& ctx, const Geometry& geometry, uint32_t mapSize, int gridSide,
-                                       const glm::mat4* viewProj, int count, PassSpec light) {
-  const uint32_t grid = uint32_t(gridSide), tile = mapSize / grid;
-  std::vector<HostImage> atlases = emptyAtlases(mapSize, light);
-  light.width = light.height = tile;
-  for (int i = 0; i < count; ++i) {
-    std::memcpy(light.push.viewProj, glm::value_ptr(viewProj[i]), sizeof light.push.viewProj);
-    placeTile(atlases, renderOffscreen(ctx, geometry, light), uint32_t(i) % grid * tile, uint32_t(i) / grid * tile);
-  }
-  return atlases;
-}
-
 }  // namespace
 
 HardwareDepth hardwareDepthFromSpec(const nlohmann::json& spec) {
@@ -406,7 +375,6 @@ RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup
   RasterOutputs out;
 
   PassSpec light;
-  light.width = light.height = setup.mapSize;
   light.colors = {ImageFormat::R32F};
   VkClearColorValue far{};
   far.float32[0] = 1.0f;  // "nothing hit" (frame.glsl)
@@ -415,21 +383,17 @@ RasterOutputs rasterize(VulkanContext& ctx, const Scene& scene, const FrameSetup
   light.frag = "light_depth.frag";
   light.attributes = 1;
   light.depth = hardwareDepth;
-  std::memcpy(light.push.viewProj, glm::value_ptr(setup.lightViewProj), sizeof light.push.viewProj);
-  for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = setup.lightView[c][2];  // row 2 of a column-major matrix
   light.push.depthRange[0] = setup.nearPlane;
   light.push.depthRange[1] = setup.farPlane;
-  std::vector<HostImage> light0;
-  if (setup.cube)
-    light0 = renderCubeAtlas(ctx, geometry, setup, light);
-  else if (setup.cascadeCount > 0)
-    light0 = renderTileAtlas(ctx, geometry, setup.mapSize, setup.cascadeGrid, setup.cascadeViewProj.data(),
-                             setup.cascadeCount, light);
-  else if (!setup.lightSampleViewProj.empty())
-    light0 = renderTileAtlas(ctx, geometry, setup.mapSize, setup.lightSampleGrid, setup.lightSampleViewProj.data(),
-                             int(setup.lightSampleViewProj.size()), light);
-  else
-    light0 = renderOffscreen(ctx, geometry, light);
+  // Every view (light_views.h: the map, six cube faces, cascades or light samples) rendered on
+  // its own at its tile's size and copied into its tile; the rest of the map stays "nothing hit".
+  std::vector<HostImage> light0 = emptyAtlases(setup.mapSize, light);
+  for (const LightView& v : lightViews(setup)) {
+    std::memcpy(light.push.viewProj, glm::value_ptr(v.viewProj), sizeof light.push.viewProj);
+    for (int c = 0; c < 4; ++c) light.push.lightZRow[c] = v.zRow[c];
+    light.width = light.height = v.size;
+    placeTile(light0, renderOffscreen(ctx, geometry, light), v.x0, v.y0);
+  }
   out.lightDepth = std::move(light0.at(0));
   if (hardwareDepth.kept()) out.hardwareDepth = std::move(light0.at(1));
 
