@@ -19,6 +19,7 @@ CommandRunner registerSweep(CLI::App& app);        // cmd_sweep.cpp
 CommandRunner registerAnalyze(CLI::App& app);      // cmd_analyze.cpp
 CommandRunner registerPlan(CLI::App& app);         // cmd_plan.cpp
 CommandRunner registerCostProfile(CLI::App& app);  // cmd_cost_profile.cpp
+CommandRunner registerExportScene(CLI::App& app);  // cmd_export_scene.cpp
 
 // An option's old spelling, kept only to say its new one: one spelling for each option across
 // subcommands (docs/cli.md), so `--size 64` from an old script fails with a message naming

@@ -37,6 +37,7 @@ int main(int argc, char** argv) {
   add(registerAnalyze);
   add(registerPlan);
   add(registerCostProfile);
+  add(registerExportScene);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

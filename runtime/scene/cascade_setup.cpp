@@ -88,6 +88,7 @@ void setupCascades(const Scene& scene, const CascadeConfig& c, FrameSetup& f) {
     const double cx = std::floor(lc.x / texel) * texel, cy = std::floor(lc.y / texel) * texel;
     // The atlas frame of frame_cascades.glsl: uv = 0.5 + 0.5 (p.xy + o) / H (include/shadowc/frame.h).
     setCascade(f.frame, i, cx, cy, h, splits[size_t(i) + 1], f.mapSize, c.grid);
+    f.cascadeWindows[size_t(i)] = {cx, cy, h, splits[size_t(i) + 1]};
     // Vulkan clip of the tile: x_c = (x - cx) / h, y_c = (y - cy) / h, z_c as fitSun's.
     glm::mat4 proj(0.0f);
     proj[0][0] = float(1.0 / h);

@@ -38,6 +38,9 @@ struct FrameSetup {
   int cascadeCount = 0, cascadeGrid = 1;
   std::array<glm::mat4, kMaxCascades> cascadeViewProj{};
   std::array<float, kMaxCascades + 1> cascadeSplits{};  // camera depths, cascadeCount + 1 of them
+  // setCascade's arguments for cascade i (include/shadowc/frame.h): light-view centre cx, cy of
+  // its window, half-width h, far split (camera depth), as an engine passes them.
+  std::array<glm::dvec4, kMaxCascades> cascadeWindows{};
   // A light-sampled spot (light_sample_setup.h; none = one view from the centre): view i is rendered
   // with lightSampleViewProj[i] into tile (i mod lightSampleGrid, i div lightSampleGrid) of the map,
   // tiles of floor(mapSize / lightSampleGrid) texels.
