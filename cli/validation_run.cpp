@@ -277,7 +277,10 @@ int runValidation(const ValidationOptions& given) {
     rt::writeVisibilityPng(d / "reference.png", reference, o.size, o.size);
     rt::writeErrorPng(d / "error.png", result, reference, o.size, o.size);
     rt::writeComparisonPng(d / "comparison.png", result, reference, o.size, o.size);
-    fmt::print("images   {}/{{result,reference,error,comparison}}.png\n", d.string());
+    // The filter's visibility unrounded (float32, row 0 = top), to compare an engine's against.
+    rt::writeFileAtomically(d / "visibility.f32", std::string_view(reinterpret_cast<const char*>(result.data()),
+                                                                   result.size() * sizeof(float)));
+    fmt::print("images   {}/{{result,reference,error,comparison}}.png, visibility.f32\n", d.string());
   }
   if (messages > 0) {
     std::fflush(stdout);

@@ -318,6 +318,11 @@ std::string cppHeader(const Manifest& m, const std::map<std::string, std::string
   // The map side the filter is planned for (`resolution`, docs/dsl.md): what to allocate; 0 = the engine's choice.
   const int planned = m.spec.is_object() && m.spec.contains("resolution") ? m.spec["resolution"].get<int>() : 0;
   out += fmt::format("inline constexpr std::uint32_t plannedMapSize = {};\n", planned);
+  // The depth attachment a depth_input filter reads (docs/dsl.md "depth_input"): reverse Z means
+  // the light pass clears to 0 and keeps the greater depth; the format is its image's.
+  const bool reversed = m.spec.is_object() && m.spec.contains("depth_input") &&
+                        m.spec["depth_input"].value("z", std::string("standard")) == "reverse";
+  out += fmt::format("inline constexpr bool depthInputReversed = {};\n", reversed ? "true" : "false");
   // The light views to render (`light_samples`, docs/integration.md "Light samples"): view i from
   // the light view translated by -width * lightViewOffsets[i], into tile (i % lightViewGrid,
   // i / lightViewGrid) of the light-depth atlas. Only with light samples, so other headers are unchanged.

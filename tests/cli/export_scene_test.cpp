@@ -106,7 +106,9 @@ TEST(ExportScene, AnEngineFillsTheHarnessFrameAndDrawsItsViewsFromTheExport) {
     const rt::FrameSetup h = harnessSetup(c.scene, spec);
     const ShadowcFrame f = engineFrame(e.scene);
     EXPECT_EQ(std::memcmp(&f, &h.frame, sizeof f), 0) << c.scene << ": the engine's frame is not the harness's";
-    if (c.scene == "sun_two_planes") EXPECT_EQ(e.scene["cascades"]["count"], 4);
+    if (c.scene == "sun_two_planes") {
+      EXPECT_EQ(e.scene["cascades"]["count"], 4);
+    }
 
     // The views, exactly the rasterizer's.
     const std::vector<rt::LightView> views = rt::lightViews(h);

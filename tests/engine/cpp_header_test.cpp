@@ -83,6 +83,8 @@ std::string expectations(const Manifest& m, const driver::Artifact& a) {
   bindings("f::filter.lookup.bindings", m.shade.bindings);
   // The planned map side (`resolution`, docs/dsl.md), 0 when the spec has none.
   t += fmt::format("static_assert(f::plannedMapSize == {});\n", m.spec.value("resolution", 0));
+  const bool reversed = m.spec.contains("depth_input") && m.spec["depth_input"].value("z", "") == "reverse";
+  t += fmt::format("static_assert(f::depthInputReversed == {});\n", reversed);
   t += fmt::format("static_assert(f::filter.bufferCount == {});\n", m.buffers.size());
   for (size_t i = 0; i < m.buffers.size(); ++i) {
     const BufferDesc& b = m.buffers[i];
@@ -150,6 +152,28 @@ TEST(CppHeader, PlannedMapSizeIsTheResolution) {
       << test::readFile(dir / "log.txt");
   EXPECT_NE(compileTu(dir, name, *header, "static_assert(" + ns + " == 2048);\n"), 0);
   std::filesystem::remove_all(dir);
+}
+
+// A depth_input filter's header says which way its depth attachment runs; a sibling fails.
+TEST(CppHeader, DepthInputReversedIsTheSpecs) {
+  driver::Options o;
+  o.engineOutputs = {driver::OutputKind::CppHeader};
+  const std::string text = test::readFile(test::samplePath("pcf_grid5x5"));
+  const std::string ns = "shadowc_filters::pcf_grid5x5::depthInputReversed";
+  for (const auto& [line, reversed] : {std::pair{"depth_input d32(z: reverse)", true}, {"depth_input d24", false}}) {
+    const driver::Result r =
+        driver::compileSource(text.substr(0, text.rfind('}')) + "    " + line + "\n}\n", "depth.shadow", o);
+    ASSERT_TRUE(r.ok) << r.log;
+    const std::string name = cppHeaderFileName("pcf_grid5x5");
+    const auto dir = test::freshTempDir("cpp-header-depth");
+    EXPECT_EQ(compileTu(dir, name, *r.artifact->file(name), fmt::format("static_assert({} == {});\n", ns, reversed)), 0)
+        << line << "\n"
+        << test::readFile(dir / "log.txt");
+    EXPECT_NE(compileTu(dir, name, *r.artifact->file(name), fmt::format("static_assert({} == {});\n", ns, !reversed)),
+              0)
+        << line;
+    std::filesystem::remove_all(dir);
+  }
 }
 
 INSTANTIATE_TEST_SUITE_P(Samples, CppHeader,

@@ -19,6 +19,8 @@ std::filesystem::path sourceDir() { return SHADOWC_SOURCE_DIR; }
 std::string shadowcBinary() { return SHADOWC_BINARY; }
 std::string engineSampleBinary() { return SHADOWC_ENGINE_BINARY; }
 std::string cxxCompiler() { return SHADOWC_CXX_COMPILER; }
+std::string buildDir() { return SHADOWC_BUILD_DIR; }
+std::string cmakeCommand() { return SHADOWC_CMAKE_COMMAND; }
 
 std::filesystem::path freshTempDir(const std::string& tag) {
   static std::atomic<int> counter{0};

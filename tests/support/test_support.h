@@ -13,6 +13,8 @@ std::filesystem::path sourceDir();                           // the repository r
 std::string shadowcBinary();                                 // the shadowc executable
 std::string engineSampleBinary();                            // samples/engine's executable
 std::string cxxCompiler();                                   // the project's C++ compiler
+std::string buildDir();                                      // the build tree (to install from)
+std::string cmakeCommand();                                  // the cmake that configured it
 std::filesystem::path freshTempDir(const std::string& tag);  // empty, unique per test
 std::string readFile(const std::filesystem::path& p);
 
