@@ -127,6 +127,15 @@ uint32_t Device::memoryType(uint32_t bits, VkMemoryPropertyFlags flags) const {
   throw std::runtime_error("no Vulkan memory type with the wanted properties");
 }
 
+VkDeviceMemory Device::allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags) {
+  VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
+  ai.allocationSize = req.size;
+  ai.memoryTypeIndex = memoryType(req.memoryTypeBits, flags);
+  VkDeviceMemory memory = VK_NULL_HANDLE;
+  check(vkAllocateMemory(device_, &ai, nullptr, &memory), "vkAllocateMemory");
+  return memory;
+}
+
 Image Device::createImage(VkFormat format, uint32_t w, uint32_t h, uint32_t levels, uint32_t layers,
                           VkImageUsageFlags usage) {
   Image im;
@@ -150,10 +159,7 @@ Image Device::createImage(VkFormat format, uint32_t w, uint32_t h, uint32_t leve
   check(vkCreateImage(device_, &ci, nullptr, &im.image), "vkCreateImage");
   VkMemoryRequirements req;
   vkGetImageMemoryRequirements(device_, im.image, &req);
-  VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  ai.allocationSize = req.size;
-  ai.memoryTypeIndex = memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
-  check(vkAllocateMemory(device_, &ai, nullptr, &im.memory), "vkAllocateMemory");
+  im.memory = allocate(req, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
   check(vkBindImageMemory(device_, im.image, im.memory, 0), "vkBindImageMemory");
   images_.push_back(im);
   return im;
@@ -168,11 +174,7 @@ Buffer Device::createBuffer(VkDeviceSize size, VkBufferUsageFlags usage) {
   check(vkCreateBuffer(device_, &ci, nullptr, &b.buffer), "vkCreateBuffer");
   VkMemoryRequirements req;
   vkGetBufferMemoryRequirements(device_, b.buffer, &req);
-  VkMemoryAllocateInfo ai{VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO};
-  ai.allocationSize = req.size;
-  ai.memoryTypeIndex =
-      memoryType(req.memoryTypeBits, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
-  check(vkAllocateMemory(device_, &ai, nullptr, &b.memory), "vkAllocateMemory");
+  b.memory = allocate(req, VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT);
   check(vkBindBufferMemory(device_, b.buffer, b.memory, 0), "vkBindBufferMemory");
   check(vkMapMemory(device_, b.memory, 0, VK_WHOLE_SIZE, 0, &b.mapped), "vkMapMemory");
   buffers_.push_back(b);

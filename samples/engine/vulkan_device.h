@@ -49,6 +49,7 @@ class Device {
 
  private:
   uint32_t memoryType(uint32_t bits, VkMemoryPropertyFlags flags) const;
+  VkDeviceMemory allocate(const VkMemoryRequirements& req, VkMemoryPropertyFlags flags);
   VkInstance instance_ = VK_NULL_HANDLE;
   VkDebugUtilsMessengerEXT messenger_ = VK_NULL_HANDLE;
   VkPhysicalDevice physical_ = VK_NULL_HANDLE;
