@@ -10,6 +10,7 @@ The sweeps cache their rows in --out (build/cost-sweep, build/h200-counts-*): a 
 what changed. Calibrate on a quiet machine: the lavapipe rows are timed."""
 import argparse
 import json
+import math
 import os
 import re
 import shlex
@@ -71,6 +72,21 @@ def same_counts(cal, lss_counts):
     return out
 
 
+def agreement(first, second):
+    """Two runs' measured frames of the same rows, as a profile's predictions are judged:
+    (count, median ratio, largest ratio, within 1.5x, worst)."""
+    a = {(r["variant"], r["case"]): r["total_ms"] for r in rows_of(os.path.join(first, "results.json"))}
+    pairs = [(abs(math.log(a[k] / r["total_ms"])), k, a[k], r["total_ms"])
+             for r in rows_of(os.path.join(second, "results.json"))
+             for k in [(r["variant"], r["case"])] if k in a and a[k] > 0 and r["total_ms"] > 0]
+    logs = sorted(p[0] for p in pairs)
+    n = len(logs)
+    median = logs[n // 2] if n % 2 else 0.5 * (logs[n // 2 - 1] + logs[n // 2])
+    worst = max(pairs)
+    return (n, math.exp(median), math.exp(logs[-1]), sum(x <= math.log(1.5) for x in logs),
+            f"{worst[1][0]} on {worst[1][1]}: first run {worst[2]:.3f} ms, rerun {worst[3]:.3f} ms")
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--shadowc", default="build/cli/shadowc")
@@ -90,6 +106,14 @@ def main():
 
     add("lavapipe", "calibration sweep",
         run([sc, "cost-profile", cal, "--device", "lavapipe", "-o", "samples/cost/lavapipe.json"], commands))
+    # The floor a lavapipe profile is judged against: the same sweep timed again right after,
+    # its readings against the first run's, and the profile fitted on the first run checked on it.
+    rerun = os.path.join(o, "cost-sweep-rerun")
+    run([sc, "sweep", "samples/sweeps/cost_calibration.json", "-o", rerun, "-j", "1", "--progress", "lines"], [])
+    commands.append(f"{sc} sweep samples/sweeps/cost_calibration.json -o {rerun} -j 1")
+    table.append(("lavapipe", "the rerun's measured frames", "against the first run's") + agreement(cal, rerun))
+    add("lavapipe", "the rerun (same rows, timed again right after)",
+        run([sc, "cost-profile", rerun, "--profile", "samples/cost/lavapipe.json"], commands))
     for scene in ["two_planes", "large_penumbra", "duck"]:
         out = run([sc, "cost-profile", cal, "--hold-out", scene, "-o", os.path.join(o, f"cost-holdout-{scene}.json")],
                   commands)
