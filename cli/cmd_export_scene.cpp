@@ -92,18 +92,14 @@ CommandRunner registerExportScene(CLI::App& app) {
     rt::SceneSettings settings;
     settings.map = o->map;
     settings.screen = o->screen;
-    nlohmann::json spec = nlohmann::json::object();
     if (!o->filter.empty()) {
       const driver::Result r = driver::compileFile(o->filter);
       if (!r.log.empty()) fmt::print(stderr, "{}", r.log);
       if (!r.artifact) return 1;
       rt::checkLightType(r.artifact->manifest, scene.light.type, scene.name);
-      spec = r.artifact->manifest.spec;
-      rt::setFilterViews(settings, spec);
+      rt::setFilterViews(settings, r.artifact->manifest.spec);
     }
-    rt::FrameSetup f = rt::setupFrame(scene, settings.map, settings.screen, settings.screen, settings.cubeTanHalf);
-    rt::setupCascades(scene, settings.cascades, f);
-    rt::setupLightSamples(scene, settings.lightSamples, f);
+    const rt::FrameSetup f = rt::fitFrame(scene, settings);
 
     size_t triangles = 0;
     const std::string mesh = meshBytes(scene, triangles);

@@ -227,13 +227,8 @@ std::string parameterBlock(const Manifest& m) {
   std::vector<uint8_t> bytes;
   writeParameterBytes(block, bytes);
   std::string out = fmt::format("\n// The generic block of pass '{}' (shadowc compile --generic).\n", with->name);
-  out += fmt::format("inline constexpr std::uint32_t parameter_words[{}] = {{", bytes.size() / 4);
-  for (size_t i = 0; i < bytes.size() / 4; ++i) {
-    uint32_t w = 0;
-    for (int b = 0; b < 4; ++b) w |= uint32_t(bytes[4 * i + b]) << (8 * b);
-    out += fmt::format("{}0x{:08x}u{}", i % 8 == 0 ? "\n    " : " ", w, i + 1 < bytes.size() / 4 ? "," : "");
-  }
-  out += "\n};\ninline constexpr ParameterMember parameter_members[] = {\n";
+  out += wordArray("parameter_words", std::string(bytes.begin(), bytes.end()));
+  out += "inline constexpr ParameterMember parameter_members[] = {\n";
   for (const BlockMember& b : block.members)
     out += fmt::format("    {{{}, {}, Scalar::{}, {}, {}, {}, {}}},\n", quoted(b.name), quoted(b.macro),
                        nameOf(kScalarNames, b.type), b.offset, b.stride, b.count, b.components);

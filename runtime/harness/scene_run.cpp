@@ -14,13 +14,18 @@ namespace {
 // The light side of a preparation: the frame (with the settings' cascades) and the rasterized
 // light depth and G-buffer.
 void fitAndRasterize(VulkanContext& ctx, PreparedScene& p) {
-  p.setup = setupFrame(p.scene, p.settings.map, p.settings.screen, p.settings.screen, p.settings.cubeTanHalf);
-  setupCascades(p.scene, p.settings.cascades, p.setup);
-  setupLightSamples(p.scene, p.settings.lightSamples, p.setup);
+  p.setup = fitFrame(p.scene, p.settings);
   p.raster = rasterize(ctx, p.scene, p.setup, p.settings.hardwareDepth);
 }
 
 }  // namespace
+
+FrameSetup fitFrame(const Scene& scene, const SceneSettings& s) {
+  FrameSetup f = setupFrame(scene, s.map, s.screen, s.screen, s.cubeTanHalf);
+  setupCascades(scene, s.cascades, f);
+  setupLightSamples(scene, s.lightSamples, f);
+  return f;
+}
 
 std::shared_ptr<const PreparedScene> prepareScene(VulkanContext& ctx, const SceneSettings& settings,
                                                   const ReferenceProgressFn& progress) {

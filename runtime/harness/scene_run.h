@@ -46,6 +46,10 @@ struct SceneSettings {
   HardwareDepth hardwareDepth;
 };
 
+// The frame `s` fits on `scene`: light frustum, camera, and the settings' cascades and light
+// samples (what prepareScene rasterizes; CPU only). Throws SceneError as those setups do.
+FrameSetup fitFrame(const Scene& scene, const SceneSettings& s);
+
 // The light views a filter's manifest asks for (its cascades, its light samples, the depth
 // attachment it reads), set into `s`.
 // Throws std::invalid_argument on a malformed spec.

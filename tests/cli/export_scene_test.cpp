@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "driver/driver.h"
+#include "emit/emit_support.h"
 #include "runtime/harness/scene_run.h"
 #include "runtime/scene/light_views.h"
-#include "emit/emit_support.h"
 #include "support/test_support.h"
 
 namespace shadowc {
@@ -79,11 +79,7 @@ rt::FrameSetup harnessSetup(const std::string& sceneName, const nlohmann::json& 
   s.map = 256;
   s.screen = 64;
   rt::setFilterViews(s, spec);
-  const rt::Scene scene = rt::loadScene(sceneName);
-  rt::FrameSetup f = rt::setupFrame(scene, s.map, s.screen, s.screen, s.cubeTanHalf);
-  rt::setupCascades(scene, s.cascades, f);
-  rt::setupLightSamples(scene, s.lightSamples, f);
-  return f;
+  return rt::fitFrame(rt::loadScene(sceneName), s);
 }
 
 TEST(ExportScene, AnEngineFillsTheHarnessFrameAndDrawsItsViewsFromTheExport) {
